@@ -1,0 +1,88 @@
+// Hand-written argument cursor: see args.h.
+#include "cli/args.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "renderer/core/error.h"
+
+namespace penumbra::cli {
+
+bool ArgCursor::flag(std::string_view short_name, std::string_view long_name) {
+    if (done()) return false;
+    const std::string& a = args_[index_];
+    if ((!short_name.empty() && a == short_name) || a == long_name) {
+        ++index_;
+        return true;
+    }
+    if (a.size() > long_name.size() && a.compare(0, long_name.size(), long_name) == 0 &&
+        a[long_name.size()] == '=')
+        fail(std::string(long_name) + " takes no value");
+    return false;
+}
+
+std::optional<std::string> ArgCursor::option(std::string_view short_name,
+                                             std::string_view long_name) {
+    if (done()) return std::nullopt;
+    const std::string& a = args_[index_];
+    if ((!short_name.empty() && a == short_name) || a == long_name) {
+        if (index_ + 1 >= args_.size()) fail(a + " needs a value");
+        index_ += 2;
+        return args_[index_ - 1];
+    }
+    if (a.size() > long_name.size() && a.compare(0, long_name.size(), long_name) == 0 &&
+        a[long_name.size()] == '=') {
+        ++index_;
+        return a.substr(long_name.size() + 1);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> ArgCursor::positional() {
+    if (done()) return std::nullopt;
+    const std::string& a = args_[index_];
+    if (a.size() > 1 && a[0] == '-') return std::nullopt;
+    ++index_;
+    return a;
+}
+
+void ArgCursor::unknown() const {
+    const std::string& a = args_[index_];
+    if (a.size() > 1 && a[0] == '-') fail("unknown flag '" + a + "' (see --help)");
+    fail("unexpected argument '" + a + "' (see --help)");
+}
+
+void ArgCursor::fail(const std::string& message) const {
+    throw InputError(command_ + ": " + message);
+}
+
+double parseDouble(const ArgCursor& c, std::string_view flag, const std::string& text) {
+    double v = 0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
+        c.fail(std::string(flag) + ": expected a number, got '" + text + "'");
+    return v;
+}
+
+int parseInt(const ArgCursor& c, std::string_view flag, const std::string& text, int min, int max) {
+    long v = 0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (text.empty() || ec != std::errc() || ptr != end)
+        c.fail(std::string(flag) + ": expected a whole number, got '" + text + "'");
+    if (v < min || v > max)
+        c.fail(std::string(flag) + ": " + text + " is out of range [" + std::to_string(min) +
+               ", " + std::to_string(max) + "]");
+    return static_cast<int>(v);
+}
+
+std::pair<int, int> parseSize(const ArgCursor& c, std::string_view flag, const std::string& text) {
+    size_t x = text.find('x');
+    if (x == std::string::npos) c.fail(std::string(flag) + ": expected WxH, got '" + text + "'");
+    int w = parseInt(c, flag, text.substr(0, x), 1, 1 << 20);
+    int h = parseInt(c, flag, text.substr(x + 1), 1, 1 << 20);
+    return {w, h};
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,22 @@
+// Atomic file writes: a temporary name beside the target, then rename, so a killed job never
+// leaves a partial file under the final name. Shared by the EXR, PNG and JSON writers.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace penumbra {
+
+// "<dir>/.<name>.<pid>.tmp": hidden, unique per process, in the target's folder (same device).
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+
+// Creates PATH's parent folders, calls WRITE(temporary path), then renames it to PATH.
+// On any failure the temporary file is removed and RuntimeError names PATH.
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path&)>& write);
+
+// Writes TEXT to PATH atomically.
+void writeFileAtomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace penumbra

@@ -1,0 +1,38 @@
+// A multi-channel float image as the renderer hands it to the writers and as `compare` reads
+// it back: named channels, each stored as float and written as half or float.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace penumbra::output {
+
+enum class PixelType { Half, Float };
+
+struct ImageChannel {
+    std::string name;  // EXR channel name: "R", "Z", "P.X", "visibility", "adaptive.maps", ...
+    PixelType type = PixelType::Float;
+    std::vector<float> pixels;  // width * height, row-major, row 0 = top of the picture
+};
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<ImageChannel> channels;
+    // Header attributes written as EXR string attributes (e.g. "penumbra/technique").
+    std::vector<std::pair<std::string, std::string>> attributes;
+
+    const ImageChannel* find(const std::string& name) const {
+        for (const auto& c : channels)
+            if (c.name == name) return &c;
+        return nullptr;
+    }
+    ImageChannel& add(std::string name, PixelType type) {
+        channels.push_back({std::move(name), type,
+                            std::vector<float>(static_cast<size_t>(width) * height, 0.0f)});
+        return channels.back();
+    }
+};
+
+}  // namespace penumbra::output
