@@ -1,0 +1,94 @@
+// `penumbra render SCENE.json [options]`: argv -> RenderRequest; no GL, no JSON details here.
+#include <cstdio>
+
+#include "cli/backend_flags.h"
+#include "cli/commands.h"
+#include "renderer/render/render_job.h"
+
+namespace penumbra::cli {
+namespace {
+
+constexpr const char* kHelp = R"(usage: penumbra render SCENE.json [options]
+
+Renders the scene's frames offscreen with one soft-shadow technique and writes, per frame, an
+OpenEXR image (beauty, depth, position, normal, visibility, id, diagnostics) and a timing JSON.
+
+options:
+  -t, --technique NAME   hard, reference (see `penumbra techniques`); overrides technique.name
+  -D, --set KEY=VALUE    override a scene value by dotted path (repeatable); VALUE is JSON,
+                         a bare word is a string: -D technique.samples=8 -D lights.0.size=[1,1]
+  -o, --output PATTERN   EXR path; a run of # is the zero-padded frame number
+                         (default out/<scene name>.####.exr)
+      --timings PATTERN  timing JSON path (default: the EXR path with .json)
+      --preview PATTERN  also write a tone-mapped PNG
+  -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2 (default: the scene's animation
+                         range, else frame 0)
+      --size WxH         image size (same as -D image.width=W -D image.height=H)
+      --backend B        auto (default), egl, osmesa
+      --device N         EGL device index (see `penumbra info`)
+      --skip-existing    skip frames whose EXR already exists
+      --warmup N         render each frame N extra times first, untimed
+      --repeat N         time N renders per frame; the JSON gets min/median/max per pass
+      --quiet            no progress or messages except errors
+      --gl-debug         print every KHR_debug message
+  -h, --help             this help
+
+exit codes: 0 all frames written, 1 a frame failed at run time, 2 bad command line or input,
+3 no usable OpenGL backend.
+)";
+
+}  // namespace
+
+int runRender(const Args& args) {
+    ArgCursor c("render", args);
+    render::RenderRequest req;
+    std::optional<std::string> scene;
+    while (!c.done()) {
+        if (c.flag("-h", "--help")) {
+            std::fputs(kHelp, stdout);
+            return 0;
+        }
+        if (auto v = c.option("-t", "--technique")) {
+            req.technique = *v;
+        } else if (auto v = c.option("-D", "--set")) {
+            size_t eq = v->find('=');
+            if (eq == std::string::npos || eq == 0)
+                c.fail("-D: expected KEY=VALUE, got '" + *v + "'");
+            req.overrides.push_back({v->substr(0, eq), v->substr(eq + 1)});
+        } else if (auto v = c.option("-o", "--output")) {
+            if (v->empty()) c.fail("--output: empty pattern");
+            req.output = *v;
+        } else if (auto v = c.option("", "--timings")) {
+            if (v->empty()) c.fail("--timings: empty pattern");
+            req.timings = *v;
+        } else if (auto v = c.option("", "--preview")) {
+            if (v->empty()) c.fail("--preview: empty pattern");
+            req.preview = *v;
+        } else if (auto v = c.option("-f", "--frames")) {
+            req.frames = *v;
+        } else if (auto v = c.option("", "--size")) {
+            auto [w, h] = parseSize(c, "--size", *v);
+            req.overrides.push_back({"image.width", std::to_string(w)});
+            req.overrides.push_back({"image.height", std::to_string(h)});
+        } else if (auto v = c.option("", "--warmup")) {
+            req.warmup = parseInt(c, "--warmup", *v, 0, 1000);
+        } else if (auto v = c.option("", "--repeat")) {
+            req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
+        } else if (c.flag("", "--skip-existing")) {
+            req.skip_existing = true;
+        } else if (c.flag("-q", "--quiet")) {
+            req.quiet = true;
+        } else if (parseBackendFlag(c, req.gl)) {
+        } else if (auto p = c.positional()) {
+            if (scene) c.fail("unexpected argument '" + *p + "': one scene per render");
+            scene = *p;
+        } else {
+            c.unknown();
+        }
+    }
+    if (!scene) c.fail("missing SCENE.json (see --help)");
+    req.scene = *scene;
+    return render::runRenderJob(req);
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,81 @@
+// `penumbra techniques [NAME] [--json]`: every technique and every parameter (key, type,
+// default, range, meaning), straight from the parameter tables.
+#include <cstdio>
+#include <iostream>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::cli {
+namespace {
+
+constexpr const char* kHelp = R"(usage: penumbra techniques [NAME] [--json]
+
+Lists the techniques and, for each, every parameter: key, type, default, range or choices,
+and a one-line meaning. Set them in the scene's "technique" block or with -D technique.KEY=V.
+)";
+
+std::string rangeText(const ParamSpec& s) {
+    nlohmann::json j = paramSpecJson(s);
+    if (j.contains("range")) return "[" + j["range"][0].dump() + ", " + j["range"][1].dump() + "]";
+    if (j.contains("choices")) {
+        std::string out;
+        for (const auto& c : j["choices"]) out += (out.empty() ? "" : "|") + c.get<std::string>();
+        return out;
+    }
+    return "true|false";
+}
+
+}  // namespace
+
+int runTechniques(const Args& args) {
+    ArgCursor c("techniques", args);
+    bool json = false;
+    std::optional<std::string> name;
+    while (!c.done()) {
+        if (c.flag("-h", "--help")) {
+            std::fputs(kHelp, stdout);
+            return 0;
+        }
+        if (c.flag("", "--json")) {
+            json = true;
+        } else if (auto p = c.positional()) {
+            if (name) c.fail("unexpected argument '" + *p + "'");
+            name = *p;
+        } else {
+            c.unknown();
+        }
+    }
+    std::vector<const techniques::TechniqueInfo*> list;
+    for (const auto& t : techniques::allTechniques())
+        if (!name || t.name == *name) list.push_back(&t);
+    if (list.empty()) {
+        std::string known;
+        for (const auto& t : techniques::allTechniques())
+            known += (known.empty() ? "" : ", ") + std::string(t.name);
+        c.fail("unknown technique '" + *name + "' (known: " + known + ")");
+    }
+    if (json) {
+        nlohmann::json out = nlohmann::json::array();
+        for (const auto* t : list) {
+            nlohmann::json params = nlohmann::json::array();
+            for (const auto& s : t->params) params.push_back(paramSpecJson(s));
+            out.push_back({{"name", t->name}, {"summary", t->summary}, {"params", params}});
+        }
+        std::cout << (name ? out[0] : out).dump(2) << "\n";
+        return 0;
+    }
+    for (const auto* t : list) {
+        std::printf("%s: %s\n", std::string(t->name).c_str(), std::string(t->summary).c_str());
+        for (const auto& s : t->params)
+            std::printf("  %-16s %-6s default %-8s %-22s %s\n", std::string(s.key).c_str(),
+                        std::string(paramTypeName(s.type)).c_str(),
+                        paramDefault(s).dump().c_str(), rangeText(s).c_str(),
+                        std::string(s.doc).c_str());
+        std::printf("\n");
+    }
+    return 0;
+}
+
+}  // namespace penumbra::cli

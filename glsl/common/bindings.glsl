@@ -1,0 +1,4 @@
+// Binding points shared by passes (texture units and buffer bindings). Keep in sync with
+// renderer/passes/bindings.h, which defines the same numbers for the host.
+#define BINDING_SAMPLE_VIEWS 0
+#define BINDING_LIGHTS 1

@@ -1,0 +1,19 @@
+// One light-sample shadow map's view (std430; mirrors passes::SampleView on the host):
+// perspective from a point on the light, linear depth (dist along forward - near)/(far - near).
+#include "common/bindings.glsl"
+
+struct SampleView {
+    mat4 view_proj;
+    vec4 origin;   // xyz: sample point; w: weight of this sample in the average
+    vec4 forward;  // xyz: the light's facing direction; w: near distance
+    vec4 params;   // x: far distance; y: world size of a texel per unit distance; zw: unused
+};
+
+layout(std430, binding = BINDING_SAMPLE_VIEWS) readonly buffer SampleViews {
+    SampleView u_views[];
+};
+
+float sampleLinearDepth(SampleView v, vec3 world) {
+    float z = dot(world - v.origin.xyz, v.forward.xyz);
+    return (z - v.forward.w) / (v.params.x - v.forward.w);
+}

@@ -1,0 +1,52 @@
+// Frame patterns: see output_paths.h.
+#include "renderer/core/output_paths.h"
+
+#include <cstdio>
+
+namespace penumbra {
+namespace {
+
+std::string padded(int frame, size_t width) {
+    std::string digits = std::to_string(frame < 0 ? -static_cast<long>(frame) : frame);
+    if (digits.size() < width) digits.insert(0, width - digits.size(), '0');
+    return frame < 0 ? "-" + digits : digits;
+}
+
+size_t extensionStart(std::string_view path) {
+    size_t slash = path.find_last_of('/');
+    size_t dot = path.find_last_of('.');
+    size_t name = slash == std::string_view::npos ? 0 : slash + 1;
+    if (dot == std::string_view::npos || dot <= name) return std::string_view::npos;
+    return dot;
+}
+
+}  // namespace
+
+std::string expandFramePattern(std::string_view pattern, int frame, bool several_frames) {
+    std::string out;
+    bool replaced = false;
+    for (size_t i = 0; i < pattern.size();) {
+        if (pattern[i] == '#') {
+            size_t j = i;
+            while (j < pattern.size() && pattern[j] == '#') ++j;
+            out += padded(frame, j - i);
+            replaced = true;
+            i = j;
+        } else {
+            out += pattern[i++];
+        }
+    }
+    if (replaced || !several_frames) return out;
+    size_t dot = extensionStart(out);
+    std::string number = "." + padded(frame, 4);
+    if (dot == std::string::npos) return out + number;
+    return out.substr(0, dot) + number + out.substr(dot);
+}
+
+std::string replaceExtension(std::string_view path, std::string_view ext) {
+    size_t dot = extensionStart(path);
+    if (dot == std::string_view::npos) return std::string(path) + std::string(ext);
+    return std::string(path.substr(0, dot)) + std::string(ext);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,15 @@
+// Output file names from patterns: a run of '#' becomes the zero-padded frame number; with
+// several frames and no '#', ".####" goes before the extension (PRODUCT.md, --output).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace penumbra {
+
+std::string expandFramePattern(std::string_view pattern, int frame, bool several_frames);
+
+// PATH with its extension replaced by EXT (".json"), or EXT appended when it has none.
+std::string replaceExtension(std::string_view path, std::string_view ext);
+
+}  // namespace penumbra

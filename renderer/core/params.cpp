@@ -1,0 +1,156 @@
+// Parameter tables and their validation: see params.h.
+#include "renderer/core/params.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "renderer/core/error.h"
+
+namespace penumbra {
+namespace {
+
+bool choiceAllowed(std::string_view choices, std::string_view value) {
+    size_t start = 0;
+    while (start <= choices.size()) {
+        size_t bar = choices.find('|', start);
+        if (bar == std::string_view::npos) bar = choices.size();
+        if (choices.substr(start, bar - start) == value) return true;
+        start = bar + 1;
+    }
+    return false;
+}
+
+std::string choiceList(std::string_view choices) {
+    std::string s(choices);
+    for (char& ch : s)
+        if (ch == '|') ch = ',';
+    std::string out;
+    for (char ch : s) {
+        out += ch;
+        if (ch == ',') out += ' ';
+    }
+    return out;
+}
+
+std::string number(double v) {
+    nlohmann::json j = v;
+    if (v == std::floor(v) && std::fabs(v) < 1e15) j = static_cast<long long>(v);
+    return j.dump();
+}
+
+}  // namespace
+
+std::string_view paramTypeName(ParamType type) {
+    switch (type) {
+        case ParamType::Int: return "int";
+        case ParamType::Float: return "float";
+        case ParamType::Bool: return "bool";
+        case ParamType::Enum: return "enum";
+    }
+    return "?";
+}
+
+nlohmann::json paramDefault(const ParamSpec& s) {
+    switch (s.type) {
+        case ParamType::Int: return static_cast<long long>(s.def);
+        case ParamType::Float: return s.def;
+        case ParamType::Bool: return s.def != 0;
+        case ParamType::Enum: return std::string(s.enum_def);
+    }
+    return nullptr;
+}
+
+nlohmann::json paramSpecJson(const ParamSpec& s) {
+    nlohmann::json j = {{"key", s.key},
+                        {"type", paramTypeName(s.type)},
+                        {"default", paramDefault(s)},
+                        {"doc", s.doc}};
+    if (s.type == ParamType::Int) j["range"] = {static_cast<long long>(s.min), static_cast<long long>(s.max)};
+    if (s.type == ParamType::Float) j["range"] = {s.min, s.max};
+    if (s.type == ParamType::Enum) {
+        j["choices"] = nlohmann::json::array();
+        size_t start = 0;
+        while (start <= s.choices.size()) {
+            size_t bar = s.choices.find('|', start);
+            if (bar == std::string_view::npos) bar = s.choices.size();
+            j["choices"].push_back(std::string(s.choices.substr(start, bar - start)));
+            start = bar + 1;
+        }
+    }
+    return j;
+}
+
+const nlohmann::json& Params::at(std::string_view key) const {
+    auto it = values_.find(std::string(key));
+    if (it == values_.end())
+        throw std::logic_error("parameter '" + std::string(key) + "' is not in the table");
+    return *it;
+}
+
+int Params::getInt(std::string_view key) const { return at(key).get<int>(); }
+double Params::getFloat(std::string_view key) const { return at(key).get<double>(); }
+bool Params::getBool(std::string_view key) const { return at(key).get<bool>(); }
+std::string Params::getString(std::string_view key) const { return at(key).get<std::string>(); }
+
+Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& block,
+                     std::string_view where) {
+    const std::string prefix = std::string(where) + ".";
+    if (!block.is_object()) throw InputError(std::string(where) + ": expected an object");
+    for (const auto& [key, value] : block.items()) {
+        if (key == "name") continue;
+        bool known = false;
+        for (const auto& s : specs) known = known || s.key == key;
+        if (!known) {
+            std::string allowed;
+            for (const auto& s : specs) allowed += (allowed.empty() ? "" : ", ") + std::string(s.key);
+            throw InputError(prefix + key + ": unknown parameter for technique '" +
+                             block.value("name", std::string("?")) + "' (known: " +
+                             (allowed.empty() ? "none" : allowed) + ")");
+        }
+    }
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& s : specs) {
+        const std::string key(s.key);
+        auto it = block.find(key);
+        if (it == block.end()) {
+            out[key] = paramDefault(s);
+            continue;
+        }
+        const nlohmann::json& v = *it;
+        const std::string at = prefix + key + ": ";
+        switch (s.type) {
+            case ParamType::Int: {
+                double d = v.is_number() ? v.get<double>() : NAN;
+                if (!v.is_number() || d != std::floor(d))
+                    throw InputError(at + "expected a whole number, got " + v.dump());
+                if (d < s.min || d > s.max)
+                    throw InputError(at + v.dump() + " is out of range [" + number(s.min) + ", " +
+                                     number(s.max) + "]");
+                out[key] = static_cast<long long>(d);
+                break;
+            }
+            case ParamType::Float: {
+                if (!v.is_number()) throw InputError(at + "expected a number, got " + v.dump());
+                double d = v.get<double>();
+                if (!std::isfinite(d) || d < s.min || d > s.max)
+                    throw InputError(at + v.dump() + " is out of range [" + number(s.min) + ", " +
+                                     number(s.max) + "]");
+                out[key] = d;
+                break;
+            }
+            case ParamType::Bool:
+                if (!v.is_boolean()) throw InputError(at + "expected true or false, got " + v.dump());
+                out[key] = v.get<bool>();
+                break;
+            case ParamType::Enum:
+                if (!v.is_string() || !choiceAllowed(s.choices, v.get<std::string>()))
+                    throw InputError(at + "expected one of " + choiceList(s.choices) + ", got " +
+                                     v.dump());
+                out[key] = v.get<std::string>();
+                break;
+        }
+    }
+    return Params(std::move(out));
+}
+
+}  // namespace penumbra

@@ -1,0 +1,109 @@
+// Backend selection and context information: see context.h.
+#include "renderer/gl/context.h"
+
+#include <glad/gl.h>
+
+#include <cstring>
+
+#include "renderer/core/error.h"
+#include "renderer/gl/context_egl.h"
+#include "renderer/gl/context_osmesa.h"
+
+namespace penumbra::gl {
+namespace {
+
+std::string glString(GLenum name) {
+    const GLubyte* s = glGetString(name);
+    return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+int glInt(GLenum name) {
+    GLint v = 0;
+    glGetIntegerv(name, &v);
+    return v;
+}
+
+bool hasGlExtension(const char* name) {
+    GLint n = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+    for (GLint i = 0; i < n; ++i) {
+        const GLubyte* e = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+        if (e && std::strcmp(reinterpret_cast<const char*>(e), name) == 0) return true;
+    }
+    return false;
+}
+
+bool isSoftwareRenderer(const std::string& renderer) {
+    for (const char* s : {"llvmpipe", "softpipe", "swrast", "SwiftShader", "lavapipe"})
+        if (renderer.find(s) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+void fillContextInfo(ContextInfo& info) {
+    info.vendor = glString(GL_VENDOR);
+    info.renderer = glString(GL_RENDERER);
+    info.version = glString(GL_VERSION);
+    info.glsl_version = glString(GL_SHADING_LANGUAGE_VERSION);
+    info.major = glInt(GL_MAJOR_VERSION);
+    info.minor = glInt(GL_MINOR_VERSION);
+    info.software = isSoftwareRenderer(info.renderer);
+    info.max_texture_size = glInt(GL_MAX_TEXTURE_SIZE);
+    info.max_array_layers = glInt(GL_MAX_ARRAY_TEXTURE_LAYERS);
+    info.max_renderbuffer_size = glInt(GL_MAX_RENDERBUFFER_SIZE);
+    info.max_samples = glInt(GL_MAX_SAMPLES);
+    info.max_color_attachments = glInt(GL_MAX_COLOR_ATTACHMENTS);
+    info.has_vertex_layer = hasGlExtension("GL_ARB_shader_viewport_layer_array") ||
+                            hasGlExtension("GL_AMD_vertex_shader_layer");
+}
+
+nlohmann::json ContextInfo::toJson() const {
+    return {{"api", api},
+            {"device", device},
+            {"vendor", vendor},
+            {"renderer", renderer},
+            {"version", version},
+            {"glsl_version", glsl_version},
+            {"software", software},
+            {"timer", software ? "cpu_glfinish" : "gl_timer_query"},
+            {"limits",
+             {{"max_texture_size", max_texture_size},
+              {"max_array_texture_layers", max_array_layers},
+              {"max_renderbuffer_size", max_renderbuffer_size},
+              {"max_samples", max_samples},
+              {"max_color_attachments", max_color_attachments},
+              {"vertex_shader_layer", has_vertex_layer}}}};
+}
+
+std::unique_ptr<Context> Context::create(const ContextRequest& request) {
+    std::vector<BackendProbe> probes;
+    std::unique_ptr<Context> ctx;
+    auto attempt = [&](const char* name, auto&& make) {
+        if (ctx) return;
+        std::string why;
+        ctx = make(why);
+        probes.push_back({name, ctx ? ctx->info_.renderer : why, ctx != nullptr});
+    };
+    const bool debug = request.debug;
+    if (request.backend == Backend::Auto || request.backend == Backend::Egl) {
+        attempt("egl-device", [&](std::string& why) {
+            return createEglDeviceContext(request.device, debug, why);
+        });
+        if (!request.device)
+            attempt("egl-surfaceless",
+                    [&](std::string& why) { return createEglSurfacelessContext(debug, why); });
+    }
+    if (request.backend == Backend::Auto || request.backend == Backend::OSMesa)
+        attempt("osmesa", [&](std::string& why) { return createOSMesaContext(debug, why); });
+    if (!ctx) {
+        std::string msg = "no usable OpenGL backend; tried ";
+        for (size_t i = 0; i < probes.size(); ++i)
+            msg += (i ? "; " : "") + probes[i].name + ": " + probes[i].detail;
+        throw BackendError(msg);
+    }
+    ctx->probes_ = std::move(probes);
+    return ctx;
+}
+
+}  // namespace penumbra::gl

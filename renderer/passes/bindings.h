@@ -1,0 +1,7 @@
+// Buffer binding points shared with GLSL (glsl/common/bindings.glsl defines the same numbers).
+#pragma once
+
+namespace penumbra::passes {
+constexpr unsigned kBindingSampleViews = 0;  // SSBO of SampleView (shadow_maps)
+constexpr unsigned kBindingLights = 1;       // SSBO of GpuLight (shade)
+}  // namespace penumbra::passes

@@ -1,0 +1,68 @@
+// The G-buffer pass: see gbuffer.h.
+#include "renderer/passes/gbuffer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/core/error.h"
+
+namespace penumbra::passes {
+
+CameraMatrices cameraMatrices(const scene::Camera& c, int width, int height) {
+    CameraMatrices m;
+    m.position = c.position;
+    m.view = glm::lookAt(c.position, c.target, c.up);
+    m.projection = glm::perspective(glm::radians(c.fov_y),
+                                    static_cast<float>(width) / static_cast<float>(height), c.near,
+                                    c.far);
+    return m;
+}
+
+GBuffer::GBuffer(int width, int height)
+    : width_(width),
+      height_(height),
+      position_(gl::createTexture2D(GL_RGBA32F, width, height, "gbuffer position")),
+      normal_(gl::createTexture2D(GL_RGBA32F, width, height, "gbuffer normal")),
+      albedo_(gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer albedo")),
+      id_(gl::createTexture2D(GL_R32I, width, height, "gbuffer id")),
+      depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, "gbuffer depth")),
+      fbo_(gl::createFramebuffer("gbuffer")),
+      program_(gl::buildProgram("gbuffer", {"passes/gbuffer.vert", "passes/gbuffer.frag"})) {
+    GLuint f = fbo_.id();
+    glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT0, position_.id(), 0);
+    glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT1, normal_.id(), 0);
+    glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT2, albedo_.id(), 0);
+    glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT3, id_.id(), 0);
+    glNamedFramebufferTexture(f, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                           GL_COLOR_ATTACHMENT3};
+    glNamedFramebufferDrawBuffers(f, 4, bufs);
+    if (glCheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError("gbuffer: framebuffer incomplete");
+}
+
+void GBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {
+    GLuint f = fbo_.id();
+    const float zero[4] = {0, 0, 0, 0};
+    const GLint none[4] = {-1, -1, -1, -1};
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(f, GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(f, GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(f, GL_COLOR, 2, zero);
+    glClearNamedFramebufferiv(f, GL_COLOR, 3, none);
+    glClearNamedFramebufferfv(f, GL_DEPTH, 0, &one);
+    glBindFramebuffer(GL_FRAMEBUFFER, f);
+    glViewport(0, 0, width_, height_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program_.id());
+    gl::setUniform(program_, "u_view", camera.view);
+    gl::setUniform(program_, "u_projection", camera.projection);
+    scene.draw(program_, GpuScene::Filter::All);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace penumbra::passes

@@ -1,0 +1,40 @@
+// The G-buffer pass shared by every technique: world position, normal (+ view depth), linear
+// albedo and object id per pixel, rendered once per frame from the camera.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/gpu_scene.h"
+
+namespace penumbra::passes {
+
+struct CameraMatrices {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    glm::vec3 position{0.0f};
+};
+
+CameraMatrices cameraMatrices(const scene::Camera& camera, int width, int height);
+
+class GBuffer {
+public:
+    GBuffer(int width, int height);
+    void render(const GpuScene& scene, const CameraMatrices& camera);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const gl::Texture& position() const { return position_; }  // RGBA32F: xyz, w = coverage
+    const gl::Texture& normal() const { return normal_; }      // RGBA32F: xyz, w = view depth
+    const gl::Texture& albedo() const { return albedo_; }      // RGBA16F linear
+    const gl::Texture& id() const { return id_; }              // R32I, -1 = none
+    const gl::Texture& depth() const { return depth_; }        // DEPTH32F (hardware depth)
+
+private:
+    int width_, height_;
+    gl::Texture position_, normal_, albedo_, id_, depth_;
+    gl::Framebuffer fbo_;
+    gl::Program program_;
+};
+
+}  // namespace penumbra::passes

@@ -1,0 +1,158 @@
+// GPU scene upload and drawing: see gpu_scene.h.
+#include "renderer/passes/gpu_scene.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace penumbra::passes {
+
+Bounds Bounds::transformed(const glm::mat4& m) const {
+    Bounds out;
+    if (empty()) return out;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 c((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z);
+        out.extend(glm::vec3(m * glm::vec4(c, 1.0f)));
+    }
+    return out;
+}
+
+namespace {
+
+template <typename T>
+gl::Buffer uploadBuffer(const std::vector<T>& data, std::string_view label) {
+    gl::Buffer b = gl::createBuffer(label);
+    glNamedBufferStorage(b.id(), static_cast<GLsizeiptr>(std::max<size_t>(data.size(), 1) * sizeof(T)),
+                         data.empty() ? nullptr : data.data(), 0);
+    return b;
+}
+
+gl::Texture uploadTexture(const scene::Texture& t, std::string_view label) {
+    gl::Texture tex = gl::createTexture(GL_TEXTURE_2D, label);
+    int levels = 1;
+    for (int s = std::max(t.width, t.height); s > 1; s >>= 1) ++levels;
+    glTextureStorage2D(tex.id(), levels, GL_SRGB8_ALPHA8, t.width, t.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(tex.id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        t.rgba.data());
+    glGenerateTextureMipmap(tex.id());
+    glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return tex;
+}
+
+std::unique_ptr<GpuModel> uploadModel(const scene::Model& m) {
+    auto g = std::make_unique<GpuModel>();
+    std::vector<glm::vec3> pos, nrm;
+    std::vector<glm::vec2> uv;
+    std::vector<std::uint32_t> idx;
+    for (const auto& mesh : m.meshes) {
+        GpuDraw d;
+        d.count = static_cast<GLsizei>(mesh.indices.size());
+        d.first = static_cast<GLintptr>(idx.size() * sizeof(std::uint32_t));
+        d.base_vertex = static_cast<GLint>(pos.size());
+        d.material = mesh.material;
+        g->draws.push_back(d);
+        pos.insert(pos.end(), mesh.positions.begin(), mesh.positions.end());
+        nrm.insert(nrm.end(), mesh.normals.begin(), mesh.normals.end());
+        if (mesh.uvs.size() == mesh.positions.size())
+            uv.insert(uv.end(), mesh.uvs.begin(), mesh.uvs.end());
+        else
+            uv.resize(uv.size() + mesh.positions.size(), glm::vec2(0));
+        idx.insert(idx.end(), mesh.indices.begin(), mesh.indices.end());
+        for (const auto& p : mesh.positions) g->bounds.extend(p);
+        g->triangles += mesh.indices.size() / 3;
+    }
+    const std::string label = "model " + m.source;
+    g->vao = gl::createVertexArray(label);
+    g->positions = uploadBuffer(pos, label + " positions");
+    g->normals = uploadBuffer(nrm, label + " normals");
+    g->uvs = uploadBuffer(uv, label + " uvs");
+    g->indices = uploadBuffer(idx, label + " indices");
+    GLuint vao = g->vao.id();
+    glVertexArrayVertexBuffer(vao, 0, g->positions.id(), 0, sizeof(glm::vec3));
+    glVertexArrayVertexBuffer(vao, 1, g->normals.id(), 0, sizeof(glm::vec3));
+    glVertexArrayVertexBuffer(vao, 2, g->uvs.id(), 0, sizeof(glm::vec2));
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, a == 2 ? 2 : 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao, a, a);
+    }
+    glVertexArrayElementBuffer(vao, g->indices.id());
+    for (size_t i = 0; i < m.textures.size(); ++i)
+        g->textures.push_back(uploadTexture(m.textures[i], label + " texture " + std::to_string(i)));
+    for (const auto& mat : m.materials) {
+        g->base_colors.push_back(mat.base_color);
+        g->material_texture.push_back(mat.texture);
+    }
+    if (g->base_colors.empty()) {
+        g->base_colors.push_back(glm::vec4(1));
+        g->material_texture.push_back(-1);
+    }
+    return g;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const scene::Scene& scene) {
+    for (const auto& o : scene.objects) {
+        const scene::Model* key = o.model.get();
+        if (key && !models_.count(key)) models_[key] = uploadModel(*key);
+    }
+    update(scene);
+}
+
+void GpuScene::update(const scene::Scene& scene) {
+    objects_.clear();
+    caster_bounds_ = {};
+    scene_bounds_ = {};
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const auto& o = scene.objects[i];
+        GpuObject g;
+        auto it = models_.find(o.model.get());
+        if (it == models_.end()) continue;
+        g.model = it->second.get();
+        g.transform = o.transform;
+        g.shadow = o.shadow;
+        g.id = static_cast<int>(i);
+        g.world_bounds = g.model->bounds.transformed(o.transform);
+        scene_bounds_.extend(g.world_bounds);
+        if (scene::castsShadow(o.shadow)) caster_bounds_.extend(g.world_bounds);
+        objects_.push_back(g);
+    }
+}
+
+size_t GpuScene::triangleCount() const {
+    size_t n = 0;
+    for (const auto& o : objects_) n += o.model->triangles;
+    return n;
+}
+
+void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
+                    int texture_unit) const {
+    for (const auto& o : objects_) {
+        if (filter == Filter::Casters && !scene::castsShadow(o.shadow)) continue;
+        if (filter == Filter::Receivers && !scene::receivesShadow(o.shadow)) continue;
+        gl::setUniform(program, "u_model", o.transform);
+        gl::setUniform(program, "u_normal_matrix", glm::mat3(glm::inverseTranspose(o.transform)));
+        gl::setUniform(program, "u_object_id", o.id);
+        glBindVertexArray(o.model->vao.id());
+        for (const auto& d : o.model->draws) {
+            size_t m = static_cast<size_t>(d.material) < o.model->base_colors.size()
+                           ? static_cast<size_t>(d.material)
+                           : 0;
+            gl::setUniform(program, "u_base_color", o.model->base_colors[m]);
+            int tex = o.model->material_texture[m];
+            gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
+            if (tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
+                glBindTextureUnit(static_cast<GLuint>(texture_unit),
+                                  o.model->textures[static_cast<size_t>(tex)].id());
+            glDrawElementsInstancedBaseVertex(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
+                                              reinterpret_cast<const void*>(d.first), instances,
+                                              d.base_vertex);
+        }
+    }
+    glBindVertexArray(0);
+}
+
+}  // namespace penumbra::passes

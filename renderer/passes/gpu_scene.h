@@ -1,0 +1,82 @@
+// The scene on the GPU: one vertex/index buffer set per model (shared by the objects that use
+// it), material textures, and per-frame object transforms and world bounds.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/scene/scene.h"
+
+namespace penumbra::passes {
+
+struct Bounds {
+    glm::vec3 min{1e30f}, max{-1e30f};
+    bool empty() const { return min.x > max.x; }
+    void extend(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Bounds& b) {
+        if (!b.empty()) extend(b.min), extend(b.max);
+    }
+    Bounds transformed(const glm::mat4& m) const;
+};
+
+struct GpuDraw {
+    GLsizei count = 0;      // indices
+    GLintptr first = 0;     // byte offset into the index buffer
+    GLint base_vertex = 0;
+    int material = 0;
+};
+
+struct GpuModel {
+    gl::VertexArray vao;
+    gl::Buffer positions, normals, uvs, indices;
+    std::vector<GpuDraw> draws;
+    std::vector<glm::vec4> base_colors;   // per material
+    std::vector<int> material_texture;    // per material: index into textures or -1
+    std::vector<gl::Texture> textures;
+    Bounds bounds;  // model space
+    size_t triangles = 0;
+};
+
+struct GpuObject {
+    const GpuModel* model = nullptr;
+    glm::mat4 transform{1.0f};
+    scene::ShadowRole shadow = scene::ShadowRole::Both;
+    Bounds world_bounds;
+    int id = 0;  // index in Scene::objects
+};
+
+class GpuScene {
+public:
+    // Uploads every model of SCENE once.
+    explicit GpuScene(const scene::Scene& scene);
+    // Takes the transforms of SCENE (same objects, animated values).
+    void update(const scene::Scene& scene);
+
+    const std::vector<GpuObject>& objects() const { return objects_; }
+    // World bounds of the objects that cast shadows (ShadowRole Both or Occluder).
+    const Bounds& casterBounds() const { return caster_bounds_; }
+    const Bounds& sceneBounds() const { return scene_bounds_; }
+    size_t triangleCount() const;
+
+    enum class Filter { All, Casters, Receivers };
+    // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniforms
+    // "u_model", "u_normal_matrix", "u_object_id", "u_base_color", "u_has_texture" and binds
+    // the base colour texture to unit TEXTURE_UNIT. INSTANCES > 1 draws instanced.
+    void draw(const gl::Program& program, Filter filter, int instances = 1,
+              int texture_unit = 0) const;
+
+private:
+    std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;
+    std::vector<GpuObject> objects_;
+    Bounds caster_bounds_, scene_bounds_;
+};
+
+}  // namespace penumbra::passes

@@ -1,0 +1,164 @@
+// Light-sample shadow maps: see shadow_maps.h.
+#include "renderer/passes/shadow_maps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/core/error.h"
+#include "renderer/passes/bindings.h"
+
+namespace penumbra::passes {
+namespace {
+constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
+}
+
+SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
+                          const Bounds& casters, float weight, int map_size) {
+    const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
+    float zmin = 1e30f, zmax = -1e30f;
+    float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
+    if (!casters.empty()) {
+        for (int i = 0; i < 8; ++i) {
+            glm::vec3 c((i & 1) ? casters.max.x : casters.min.x,
+                        (i & 2) ? casters.max.y : casters.min.y,
+                        (i & 4) ? casters.max.z : casters.min.z);
+            float z = glm::dot(c - point, f);
+            zmin = std::min(zmin, z);
+            zmax = std::max(zmax, z);
+        }
+    }
+    if (casters.empty() || zmax <= 0.0f) {
+        zmin = 0.01f, zmax = 1.0f;  // nothing in front of the light: any frustum is empty
+    }
+    const float near = std::max(zmin, zmax * 1e-4f);
+    const float far = zmax * 1.0001f + 1e-5f;
+    if (!casters.empty()) {
+        for (int i = 0; i < 8; ++i) {
+            glm::vec3 c((i & 1) ? casters.max.x : casters.min.x,
+                        (i & 2) ? casters.max.y : casters.min.y,
+                        (i & 4) ? casters.max.z : casters.min.z);
+            glm::vec3 d = c - point;
+            float z = std::max(glm::dot(d, f), near);
+            float x = glm::dot(d, r) / z, y = glm::dot(d, u) / z;
+            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
+            lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+        }
+    }
+    if (!(lo_x < hi_x)) lo_x = -1, hi_x = 1;
+    if (!(lo_y < hi_y)) lo_y = -1, hi_y = 1;
+    lo_x = std::clamp(lo_x, -kMaxTan, kMaxTan), hi_x = std::clamp(hi_x, -kMaxTan, kMaxTan);
+    lo_y = std::clamp(lo_y, -kMaxTan, kMaxTan), hi_y = std::clamp(hi_y, -kMaxTan, kMaxTan);
+    // One texel of margin so casters on the edge are rasterised.
+    const float mx = (hi_x - lo_x) / static_cast<float>(map_size);
+    const float my = (hi_y - lo_y) / static_cast<float>(map_size);
+    lo_x -= mx, hi_x += mx, lo_y -= my, hi_y += my;
+
+    glm::mat4 view(1.0f);
+    view[0][0] = r.x, view[1][0] = r.y, view[2][0] = r.z;
+    view[0][1] = u.x, view[1][1] = u.y, view[2][1] = u.z;
+    view[0][2] = -f.x, view[1][2] = -f.y, view[2][2] = -f.z;
+    view[3][0] = -glm::dot(r, point);
+    view[3][1] = -glm::dot(u, point);
+    view[3][2] = glm::dot(f, point);
+    // glm::frustum with the caster extent at the near plane.
+    glm::mat4 proj(0.0f);
+    proj[0][0] = 2.0f / (hi_x - lo_x);
+    proj[1][1] = 2.0f / (hi_y - lo_y);
+    proj[2][0] = (hi_x + lo_x) / (hi_x - lo_x);
+    proj[2][1] = (hi_y + lo_y) / (hi_y - lo_y);
+    proj[2][2] = -(far + near) / (far - near);
+    proj[2][3] = -1.0f;
+    proj[3][2] = -2.0f * far * near / (far - near);
+
+    SampleView v;
+    v.view_proj = proj * view;
+    v.origin = glm::vec4(point, weight);
+    v.forward = glm::vec4(f, near);
+    v.params = glm::vec4(far, std::max(hi_x - lo_x, hi_y - lo_y) / static_cast<float>(map_size),
+                         0.0f, 0.0f);
+    return v;
+}
+
+ShadowMapBatch::ShadowMapBatch(int map_size, int layers, bool vertex_layer)
+    : map_size_(map_size),
+      layers_(layers),
+      vertex_layer_(vertex_layer),
+      depth_(gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, map_size, map_size, layers,
+                                      "shadow map array")),
+      fbo_(gl::createFramebuffer("shadow maps")),
+      program_(gl::buildProgram("shadow depth",
+                                {"passes/shadow_depth.vert", "passes/shadow_depth.frag"},
+                                {{"VERTEX_LAYER", vertex_layer ? "1" : "0"}})) {
+    glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
+    if (vertex_layer_) {
+        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+        if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RuntimeError("shadow maps: framebuffer incomplete");
+    }
+}
+
+void ShadowMapBatch::render(const GpuScene& scene, int view_base, int count) {
+    count = std::min(count, layers_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, map_size_, map_size_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program_.id());
+    const float one = 1.0f;
+    if (vertex_layer_) {
+        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+        gl::setUniform(program_, "u_view_base", view_base);
+        scene.draw(program_, GpuScene::Filter::Casters, count);
+    } else {
+        for (int i = 0; i < count; ++i) {
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, i);
+            glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+            gl::setUniform(program_, "u_view_base", view_base + i);
+            scene.draw(program_, GpuScene::Filter::Casters, 1);
+        }
+    }
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+ShadowAccumulate::ShadowAccumulate()
+    : program_(gl::buildProgram("shadow accumulate",
+                                {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"})) {}
+
+void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base,
+                              int count, const ShadowTestSettings& s) {
+    glUseProgram(program_.id());
+    glBindTextureUnit(0, gbuffer.position().id());
+    glBindTextureUnit(1, gbuffer.normal().id());
+    glBindTextureUnit(2, batch.depth().id());
+    gl::setUniform(program_, "u_view_base", view_base);
+    gl::setUniform(program_, "u_count", std::min(count, batch.layers()));
+    gl::setUniform(program_, "u_pcf", s.pcf);
+    gl::setUniform(program_, "u_normal_offset", s.normal_offset);
+    gl::setUniform(program_, "u_depth_bias", s.depth_bias);
+    glDisable(GL_DEPTH_TEST);
+    fullscreen_.draw();
+    glUseProgram(0);
+}
+
+void SampleViewBuffer::upload(std::span<const SampleView> views) {
+    size_t bytes = std::max<size_t>(views.size(), 1) * sizeof(SampleView);
+    if (!buffer_ || bytes > capacity_) {
+        buffer_ = gl::createBuffer("sample views");
+        glNamedBufferStorage(buffer_.id(), static_cast<GLsizeiptr>(bytes), nullptr,
+                             GL_DYNAMIC_STORAGE_BIT);
+        capacity_ = bytes;
+    }
+    if (!views.empty())
+        glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(views.size_bytes()),
+                             views.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSampleViews, buffer_.id());
+}
+
+}  // namespace penumbra::passes

@@ -1,0 +1,81 @@
+// Light-sample shadow maps: a perspective view from a point on a rect light that bounds every
+// caster, batches of such maps rendered into one depth-texture array in a single instanced
+// draw, and the pass that adds their weighted hard-shadow tests into a visibility target.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/gpu_scene.h"
+
+namespace penumbra::passes {
+
+// std430 mirror of glsl/common/sample_view.glsl.
+struct SampleView {
+    glm::mat4 view_proj{1.0f};
+    glm::vec4 origin{0.0f};   // xyz point, w weight
+    glm::vec4 forward{0.0f};  // xyz direction, w near
+    glm::vec4 params{0.0f};   // x far, y texel world size per unit distance
+};
+static_assert(sizeof(SampleView) == 112);
+
+// The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
+SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
+                          const Bounds& casters, float weight, int map_size);
+
+// A depth-texture array of LAYERS maps of MAP_SIZE^2 and the program that fills it.
+class ShadowMapBatch {
+public:
+    ShadowMapBatch(int map_size, int layers, bool vertex_layer);
+    // Renders VIEWS (at most layers()) into layers 0..n-1. VIEWS_BUFFER must hold them from
+    // index VIEW_BASE on (bound to kBindingSampleViews by the caller).
+    void render(const GpuScene& scene, int view_base, int count);
+
+    int layers() const { return layers_; }
+    int mapSize() const { return map_size_; }
+    const gl::Texture& depth() const { return depth_; }
+
+private:
+    int map_size_, layers_;
+    bool vertex_layer_;
+    gl::Texture depth_;
+    gl::Framebuffer fbo_;
+    gl::Program program_;
+};
+
+struct ShadowTestSettings {
+    int pcf = 1;                  // kernel width in texels
+    float normal_offset = 1.5f;   // texels
+    float depth_bias = 0.0005f;   // linear depth units
+};
+
+// Adds sum_k weight_k * lit_k over a batch into the bound framebuffer's colour 0 (the caller
+// sets additive blending).
+class ShadowAccumulate {
+public:
+    ShadowAccumulate();
+    void render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base, int count,
+                const ShadowTestSettings& settings);
+
+private:
+    gl::Program program_;
+    Fullscreen fullscreen_;
+};
+
+// A growable SSBO of SampleViews bound at kBindingSampleViews.
+class SampleViewBuffer {
+public:
+    void upload(std::span<const SampleView> views);
+
+private:
+    gl::Buffer buffer_;
+    size_t capacity_ = 0;
+};
+
+}  // namespace penumbra::passes

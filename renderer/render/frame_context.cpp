@@ -1,0 +1,44 @@
+// Frame context and output targets: see frame_context.h.
+#include "renderer/render/frame_context.h"
+
+#include "renderer/core/error.h"
+#include "renderer/gl/debug.h"
+
+namespace penumbra::render {
+
+OutputTargets::OutputTargets(int width, int height, int lights, int diagnostics)
+    : width_(width),
+      height_(height),
+      visibility_(gl::createTexture2DArray(GL_R32F, width, height, std::max(lights, 1),
+                                           "visibility per light")),
+      fbo_(gl::createFramebuffer("technique output")) {
+    for (int i = 0; i < diagnostics; ++i)
+        diagnostics_.push_back(gl::createTexture2DArray(GL_R32F, width, height,
+                                                        std::max(lights, 1),
+                                                        "diagnostic " + std::to_string(i)));
+    std::vector<GLenum> bufs;
+    for (int i = 0; i <= diagnostics; ++i) bufs.push_back(GL_COLOR_ATTACHMENT0 + i);
+    glNamedFramebufferDrawBuffers(fbo_.id(), static_cast<GLsizei>(bufs.size()), bufs.data());
+}
+
+void OutputTargets::bind(int light) {
+    glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0, light);
+    for (size_t i = 0; i < diagnostics_.size(); ++i)
+        glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT1 + static_cast<GLenum>(i),
+                                       diagnostics_[i].id(), 0, light);
+    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError("technique output: framebuffer incomplete");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+}
+
+void FrameContext::pass(const std::string& name, const std::function<void()>& fn) {
+    std::string full = scene.lights.size() > 1 ? name + "@" + std::to_string(light) : name;
+    gl::DebugGroup group(full);
+    timer_.begin(full);
+    fn();
+    timer_.end();
+    gl::checkErrors(full);
+}
+
+}  // namespace penumbra::render

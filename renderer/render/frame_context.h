@@ -1,0 +1,66 @@
+// What a technique sees while rendering one light of one frame: the scene, its GPU copy, the
+// G-buffer, the output targets (visibility and diagnostics layers of this light), statistics,
+// and pass(), which wraps each pass in a debug group and a timer.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/gl/handles.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/gpu_scene.h"
+#include "renderer/render/pass_timer.h"
+#include "renderer/scene/scene.h"
+
+namespace penumbra::render {
+
+// Per-light output layers shared by the frame: visibility (R32F array, one layer per light)
+// and one R32F array per technique diagnostic channel.
+class OutputTargets {
+public:
+    OutputTargets(int width, int height, int lights, int diagnostics);
+    // Binds a framebuffer with colour 0 = visibility layer LIGHT, colour 1+i = diagnostic i's
+    // layer LIGHT, viewport = image size.
+    void bind(int light);
+    const gl::Texture& visibility() const { return visibility_; }
+    const std::vector<gl::Texture>& diagnostics() const { return diagnostics_; }
+
+private:
+    int width_, height_;
+    gl::Texture visibility_;
+    std::vector<gl::Texture> diagnostics_;
+    gl::Framebuffer fbo_;
+};
+
+class FrameContext {
+public:
+    FrameContext(const scene::Scene& scene, const passes::GpuScene& gpu,
+                 const passes::GBuffer& gbuffer, const passes::CameraMatrices& camera,
+                 OutputTargets& targets, PassTimer& timer, nlohmann::json& stats)
+        : scene(scene), gpu(gpu), gbuffer(gbuffer), camera(camera), targets_(targets),
+          timer_(timer), stats(stats) {}
+
+    const scene::Scene& scene;
+    const passes::GpuScene& gpu;
+    const passes::GBuffer& gbuffer;
+    const passes::CameraMatrices& camera;
+    int light = 0;  // index into scene.lights being rendered
+    const scene::RectLight& currentLight() const { return scene.lights[static_cast<size_t>(light)]; }
+
+    // Runs FN as one named, timed pass. With several lights, the name gets "@<light>".
+    void pass(const std::string& name, const std::function<void()>& fn);
+    // Binds this light's output layers (see OutputTargets::bind).
+    void bindOutput() { targets_.bind(light); }
+
+private:
+    OutputTargets& targets_;
+    PassTimer& timer_;
+
+public:
+    nlohmann::json& stats;  // technique statistics, summed over lights by the technique
+};
+
+}  // namespace penumbra::render

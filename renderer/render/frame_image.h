@@ -1,0 +1,21 @@
+// Assembles the output image of a frame from GPU textures: beauty, depth, position, normal,
+// id, visibility and the technique's diagnostic channels (PRODUCT.md, Outputs).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "renderer/output/image.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/shade.h"
+#include "renderer/render/frame_context.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::render {
+
+output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade& shade,
+                             const OutputTargets& targets, int lights,
+                             const std::string& technique_name,
+                             const std::vector<techniques::DiagnosticChannel>& diagnostics);
+
+}  // namespace penumbra::render

@@ -1,0 +1,40 @@
+// Times passes with the clock the driver can be trusted with: GL timer queries on hardware,
+// glFinish-bracketed CPU time on software rasterisers (whose timer queries close before the
+// rasterisation they measure has run).
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "renderer/gl/handles.h"
+
+namespace penumbra::render {
+
+struct PassTime {
+    std::string name;
+    double ms = 0;
+};
+
+class PassTimer {
+public:
+    explicit PassTimer(bool software) : software_(software) {}
+    const char* clockName() const { return software_ ? "cpu_glfinish" : "gl_timer_query"; }
+    void begin(const std::string& name);
+    void end();
+    // Resolves pending queries (hardware) and returns this frame's passes in order.
+    std::vector<PassTime> finishFrame();
+
+private:
+    bool software_;
+    struct Pending {
+        std::string name;
+        gl::Query query;
+        double cpu_ms = 0;
+    };
+    std::vector<Pending> pending_;
+    std::vector<gl::Query> pool_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace penumbra::render

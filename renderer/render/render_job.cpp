@@ -1,0 +1,259 @@
+// The render job: see render_job.h.
+#include "renderer/render/render_job.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "penumbra/version.h"
+#include "renderer/core/error.h"
+#include "renderer/core/frame_spec.h"
+#include "renderer/core/output_paths.h"
+#include "renderer/gl/debug.h"
+#include "renderer/output/exr.h"
+#include "renderer/output/preview.h"
+#include "renderer/output/timing.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/shade.h"
+#include "renderer/render/frame_image.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct FramePlan {
+    int frame = 0;
+    std::string exr, timing, preview;
+    bool skip = false;
+};
+
+const techniques::TechniqueInfo& findTechniqueOrThrow(const scene::Scene& s,
+                                                      const RenderRequest& req) {
+    std::string name = s.technique.value("name", std::string("hard"));
+    if (const auto* info = techniques::findTechnique(name)) return *info;
+    std::string known;
+    for (const auto& t : techniques::allTechniques())
+        known += (known.empty() ? "" : ", ") + std::string(t.name);
+    std::string where = req.technique ? "--technique" : s.path.string() + ": technique.name";
+    throw InputError(where + ": unknown technique '" + name + "' (known: " + known + ")");
+}
+
+Params resolveFor(const techniques::TechniqueInfo& info, const scene::Scene& s) {
+    return resolveParams(info.params, s.technique, s.path.string() + ": technique");
+}
+
+std::vector<FramePlan> planFrames(const RenderRequest& req, const scene::SceneSource& source,
+                                  const std::string& scene_name, const std::vector<int>& frames) {
+    const bool several = frames.size() > 1;
+    const std::string exr_pattern = req.output.value_or("out/" + scene_name + ".####.exr");
+    std::vector<FramePlan> plans;
+    std::map<std::string, int> seen;
+    for (int f : frames) {
+        FramePlan p;
+        p.frame = f;
+        p.exr = expandFramePattern(exr_pattern, f, several);
+        p.timing = req.timings ? expandFramePattern(*req.timings, f, several)
+                               : replaceExtension(p.exr, ".json");
+        if (req.preview) p.preview = expandFramePattern(*req.preview, f, several);
+        for (const auto& [path, flag] : {std::pair{p.exr, "--output"},
+                                         std::pair{p.timing, "--timings"},
+                                         std::pair{p.preview, "--preview"}}) {
+            if (path.empty()) continue;
+            auto [it, inserted] = seen.emplace(path, f);
+            if (!inserted)
+                throw InputError(std::string(flag) + ": frames " + std::to_string(it->second) +
+                                 " and " + std::to_string(f) + " would both write '" + path +
+                                 "' (use # in the pattern)");
+        }
+        p.skip = req.skip_existing && std::filesystem::exists(p.exr);
+        plans.push_back(p);
+    }
+    (void)source;
+    return plans;
+}
+
+void checkGlLimits(const scene::Scene& s, const Params& params, const gl::ContextInfo& info) {
+    const std::string where = s.path.string() + ": ";
+    const int max = std::min(info.max_texture_size, info.max_renderbuffer_size);
+    if (s.image.width > max)
+        throw InputError(where + "image.width: " + std::to_string(s.image.width) +
+                         " exceeds this GL's limit of " + std::to_string(max));
+    if (s.image.height > max)
+        throw InputError(where + "image.height: " + std::to_string(s.image.height) +
+                         " exceeds this GL's limit of " + std::to_string(max));
+    if (params.json().contains("map_size") && params.getInt("map_size") > info.max_texture_size)
+        throw InputError(where + "technique.map_size: " +
+                         std::to_string(params.getInt("map_size")) +
+                         " exceeds this GL's texture limit of " +
+                         std::to_string(info.max_texture_size));
+    if (s.lights.size() > static_cast<size_t>(info.max_array_layers))
+        throw InputError(where + "lights: more lights than this GL's array layers allow");
+}
+
+class Progress {
+public:
+    Progress(bool enabled, size_t total) : enabled_(enabled), total_(total), start_(Clock::now()) {}
+    void frame(size_t index, int frame) {
+        if (!enabled_) return;
+        double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+        double eta = index > 0 ? elapsed / static_cast<double>(index) *
+                                     static_cast<double>(total_ - index)
+                               : 0.0;
+        std::fprintf(stderr, "\rpenumbra: frame %zu of %zu (frame %d), elapsed %.1fs, ETA %.1fs   ",
+                     index + 1, total_, frame, elapsed, eta);
+        std::fflush(stderr);
+    }
+    void done() {
+        if (enabled_) std::fprintf(stderr, "\n");
+    }
+
+private:
+    bool enabled_;
+    size_t total_;
+    Clock::time_point start_;
+};
+
+}  // namespace
+
+int runRenderJob(const RenderRequest& req) {
+    // 1. Everything from the input, validated before any GL or output.
+    scene::LoadOptions options;
+    options.technique = req.technique;
+    auto source = scene::SceneSource::load(req.scene, req.overrides, options);
+    std::vector<int> frames;
+    if (req.frames)
+        frames = parseFrameSpec(*req.frames, "--frames");
+    else if (source.animationFrames())
+        frames = parseFrameSpec(*source.animationFrames(), req.scene.string() + ": animation.frames");
+    else
+        frames = {0};
+    scene::Scene first = source.at(frames.front());
+    const techniques::TechniqueInfo& info = findTechniqueOrThrow(first, req);
+    Params params = resolveFor(info, first);
+    for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
+    std::vector<FramePlan> plans = planFrames(req, source, first.name, frames);
+
+    // 2. The context (exit 3 if none), then the limits only GL knows.
+    auto context = gl::Context::create(req.gl);
+    const gl::ContextInfo& glinfo = context->info();
+    gl::enableDebugOutput(req.gl.debug);
+    checkGlLimits(first, params, glinfo);
+
+    // 3. Per-run GPU resources.
+    const int width = first.image.width, height = first.image.height;
+    const int lights = static_cast<int>(first.lights.size());
+    passes::GpuScene gpu(first);
+    passes::GBuffer gbuffer(width, height);
+    passes::Shade shade(width, height);
+    auto technique = info.create(params);
+    auto diagnostics = technique->diagnostics();
+    OutputTargets targets(width, height, lights, static_cast<int>(diagnostics.size()));
+    technique->prepare(glinfo, gpu);
+    PassTimer timer(glinfo.software);
+    gl::checkErrors("prepare");
+
+    const nlohmann::json backend = {{"api", glinfo.api},       {"device", glinfo.device},
+                                    {"vendor", glinfo.vendor}, {"renderer", glinfo.renderer},
+                                    {"version", glinfo.version}, {"clock", timer.clockName()}};
+    const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
+    Progress progress(progress_on, plans.size());
+    int failed = 0, written = 0, skipped = 0;
+    for (size_t fi = 0; fi < plans.size(); ++fi) {
+        const FramePlan& plan = plans[fi];
+        if (plan.skip) {
+            ++skipped;
+            continue;
+        }
+        progress.frame(fi, plan.frame);
+        try {
+            scene::Scene s = source.at(plan.frame);
+            Params frame_params = resolveFor(info, s);
+            if (frame_params.json() != params.json()) {
+                params = frame_params;
+                technique = info.create(params);
+                technique->prepare(glinfo, gpu);
+            }
+            gpu.update(s);
+            const passes::CameraMatrices camera = passes::cameraMatrices(s.camera, width, height);
+            output::FrameReport report;
+            std::map<std::string, size_t> pass_index;
+            nlohmann::json stats;
+            for (int run = 0; run < req.warmup + req.repeat; ++run) {
+                stats = nlohmann::json::object();
+                auto frame_start = Clock::now();
+                FrameContext ctx(s, gpu, gbuffer, camera, targets, timer, stats);
+                ctx.pass("gbuffer", [&] { gbuffer.render(gpu, camera); });
+                for (int l = 0; l < lights; ++l) {
+                    ctx.light = l;
+                    technique->render(ctx);
+                }
+                ctx.light = 0;
+                ctx.pass("shade", [&] { shade.render(gbuffer, targets.visibility(), s.lights); });
+                glFinish();
+                double frame_ms =
+                    std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
+                auto times = timer.finishFrame();
+                if (run < req.warmup) continue;
+                report.frame_ms.push_back(frame_ms);
+                for (const auto& t : times) {
+                    auto [it, inserted] = pass_index.emplace(t.name, report.passes.size());
+                    if (inserted) report.passes.push_back({t.name, timer.clockName(), {}});
+                    report.passes[it->second].ms.push_back(t.ms);
+                }
+            }
+            auto read_start = Clock::now();
+            output::Image image = readFrameImage(gbuffer, shade, targets, lights,
+                                                 std::string(info.name), diagnostics);
+            gl::checkErrors("readback");
+            report.passes.push_back(
+                {"readback", "cpu",
+                 {std::chrono::duration<double, std::milli>(Clock::now() - read_start).count()}});
+            image.attributes = {{"penumbra/version", PENUMBRA_VERSION},
+                                {"penumbra/commit", PENUMBRA_COMMIT},
+                                {"penumbra/technique", std::string(info.name)},
+                                {"penumbra/params", params.json().dump()},
+                                {"penumbra/scene", req.scene.string()},
+                                {"penumbra/frame", std::to_string(plan.frame)},
+                                {"penumbra/backend", glinfo.api},
+                                {"penumbra/gl_vendor", glinfo.vendor},
+                                {"penumbra/gl_renderer", glinfo.renderer},
+                                {"penumbra/gl_version", glinfo.version}};
+            output::writeExr(plan.exr, image);
+            if (!plan.preview.empty()) output::writePngPreview(plan.preview, image);
+            report.scene = req.scene.string();
+            report.frame = plan.frame;
+            report.technique = std::string(info.name);
+            report.params = params.json();
+            report.backend = backend;
+            report.width = width;
+            report.height = height;
+            report.warmup = req.warmup;
+            report.stats = stats;
+            report.stats["triangles"] = gpu.triangleCount();
+            report.stats["lights"] = lights;
+            report.output = {{"exr", plan.exr}};
+            if (!plan.preview.empty()) report.output["preview"] = plan.preview;
+            output::writeTimingJson(plan.timing, report);
+            ++written;
+            if (!req.quiet && !progress_on) {
+                std::fprintf(stderr, "penumbra: frame %d: wrote %s\n", plan.frame, plan.exr.c_str());
+            }
+        } catch (const RuntimeError& e) {
+            progress.done();
+            std::fprintf(stderr, "penumbra: frame %d: %s\n", plan.frame, e.what());
+            ++failed;
+        }
+    }
+    progress.done();
+    if (!req.quiet && plans.size() > 1)
+        std::fprintf(stderr, "penumbra: %d written, %d skipped, %d failed\n", written, skipped,
+                     failed);
+    return failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,35 @@
+// `penumbra render` as a job: load and validate everything, create the context, then for each
+// frame render (warmup + repeats), read back, and write EXR, timing JSON and preview.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/gl/context.h"
+#include "renderer/scene/scene_source.h"
+
+namespace penumbra::render {
+
+struct RenderRequest {
+    std::filesystem::path scene;
+    std::vector<scene::Override> overrides;  // -D, in order (--size is added as overrides)
+    std::optional<std::string> technique;    // -t
+    std::optional<std::string> output;       // -o PATTERN
+    std::optional<std::string> timings;      // --timings PATTERN
+    std::optional<std::string> preview;      // --preview PATTERN
+    std::optional<std::string> frames;       // -f SPEC
+    gl::ContextRequest gl;
+    bool skip_existing = false;
+    int warmup = 0;
+    int repeat = 1;
+    bool quiet = false;
+};
+
+// Returns the exit code (0, or 1 when a frame failed at run time). Throws InputError (bad
+// input, before anything is written) and BackendError (no context).
+int runRenderJob(const RenderRequest& request);
+
+}  // namespace penumbra::render

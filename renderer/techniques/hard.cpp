@@ -1,0 +1,47 @@
+// `hard`: one shadow map from the light's centre, with an optional PCF kernel.
+#include <array>
+
+#include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/registry_entries.h"
+
+namespace penumbra::techniques {
+namespace {
+
+constexpr std::array kHardParams = {
+    intParam("map_size", 2048, 16, 16384, "shadow map width and height in texels"),
+    intParam("pcf", 1, 1, 15, "PCF kernel width in texels (1 = a single hard test)"),
+    floatParam("normal_offset", 1.5, 0.0, 16.0,
+               "receiver offset along its normal, in shadow-map texels (against acne)"),
+    floatParam("depth_bias", 0.0005, 0.0, 0.1,
+               "constant bias subtracted from receiver depth, in units of the caster depth range"),
+};
+
+class Hard final : public Technique {
+public:
+    explicit Hard(const Params& p) : settings_(samplingSettings(p)) {
+        settings_.test.pcf = p.getInt("pcf");
+        settings_.batch = 1;
+    }
+    void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {
+        sampler_.prepare(gl, settings_);
+    }
+    void render(render::FrameContext& ctx) override {
+        const LightSample centre{{0.5f, 0.5f}, 1.0f};
+        int maps = sampler_.render(ctx, std::span(&centre, 1));
+        ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + maps;
+    }
+
+private:
+    SamplingSettings settings_;
+    LightSampler sampler_;
+};
+
+}  // namespace
+
+const TechniqueInfo kHardTechnique = {
+    "hard", "one shadow map from the light's centre (optional PCF): the hard-shadow baseline",
+    kHardParams, [](const Params& p) -> std::unique_ptr<Technique> {
+        return std::make_unique<Hard>(p);
+    }};
+
+}  // namespace penumbra::techniques

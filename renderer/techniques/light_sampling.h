@@ -1,0 +1,49 @@
+// Shared by `hard` and `reference`: shadow maps from sample points on the light, rendered in
+// batches into a texture array and averaged with their weights into the visibility target.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/params.h"
+#include "renderer/gl/context.h"
+#include "renderer/passes/shadow_maps.h"
+#include "renderer/render/frame_context.h"
+
+namespace penumbra::techniques {
+
+struct LightSample {
+    glm::vec2 uv;  // position on the light in [0,1]^2 (0.5, 0.5 = centre)
+    float weight;  // weights of one light sum to 1
+};
+
+// The settings that every shadow-map-sampling technique exposes.
+struct SamplingSettings {
+    int map_size = 1024;
+    int batch = 32;  // maps per texture-array batch
+    passes::ShadowTestSettings test;
+};
+
+class LightSampler {
+public:
+    void prepare(const gl::ContextInfo& gl, const SamplingSettings& settings);
+    // Renders VISIBILITY = sum_k w_k lit_k for SAMPLES of ctx's light into ctx's output, one
+    // "shadow_maps[b]" and one "shadow_test[b]" pass per batch. Returns maps rendered.
+    int render(render::FrameContext& ctx, std::span<const LightSample> samples);
+
+private:
+    SamplingSettings settings_;
+    std::unique_ptr<passes::ShadowMapBatch> batch_;
+    std::unique_ptr<passes::ShadowAccumulate> accumulate_;
+    passes::SampleViewBuffer views_buffer_;
+    std::vector<passes::SampleView> views_;
+};
+
+// The common parameter rows (map size, bias) with their defaults; see hard.cpp/reference.cpp.
+SamplingSettings samplingSettings(const Params& params);
+
+}  // namespace penumbra::techniques

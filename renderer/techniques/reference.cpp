@@ -1,0 +1,77 @@
+// `reference`: N x N stratified, jittered samples on the light, one hard shadow map each,
+// averaged: the ground truth every other technique is measured against. Maps are rendered in
+// batches through a texture array, so memory stays bounded up to N = 32 (1024 maps).
+#include <array>
+#include <cstdint>
+
+#include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/registry_entries.h"
+
+namespace penumbra::techniques {
+namespace {
+
+constexpr std::array kReferenceParams = {
+    intParam("samples", 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
+    boolParam("jitter", true, "jitter each sample inside its stratum (false: stratum centres)"),
+    intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
+    intParam("map_size", 1024, 16, 16384, "shadow map width and height in texels"),
+    intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
+    floatParam("normal_offset", 1.5, 0.0, 16.0,
+               "receiver offset along its normal, in shadow-map texels (against acne)"),
+    floatParam("depth_bias", 0.0005, 0.0, 0.1,
+               "constant bias subtracted from receiver depth, in units of the caster depth range"),
+};
+
+// A small integer hash (splitmix-style) for deterministic jitter.
+float hashToUnit(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::uint64_t x = (std::uint64_t(a) << 42) ^ (std::uint64_t(b) << 21) ^ c;
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    return static_cast<float>(x >> 40) / static_cast<float>(1u << 24);
+}
+
+class Reference final : public Technique {
+public:
+    explicit Reference(const Params& p)
+        : n_(p.getInt("samples")),
+          jitter_(p.getBool("jitter")),
+          seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
+          settings_(samplingSettings(p)) {
+        settings_.batch = p.getInt("batch");
+        const float w = 1.0f / static_cast<float>(n_ * n_);
+        for (int j = 0; j < n_; ++j)
+            for (int i = 0; i < n_; ++i) {
+                float jx = jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j)) : 0.5f;
+                float jy = jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j + 1)) : 0.5f;
+                samples_.push_back({{(float(i) + jx) / float(n_), (float(j) + jy) / float(n_)}, w});
+            }
+    }
+    void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {
+        sampler_.prepare(gl, settings_);
+    }
+    void render(render::FrameContext& ctx) override {
+        int maps = sampler_.render(ctx, samples_);
+        ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + maps;
+    }
+
+private:
+    int n_;
+    bool jitter_;
+    std::uint32_t seed_;
+    SamplingSettings settings_;
+    std::vector<LightSample> samples_;
+    LightSampler sampler_;
+};
+
+}  // namespace
+
+const TechniqueInfo kReferenceTechnique = {
+    "reference",
+    "N x N stratified jittered light samples, one shadow map each, averaged: the ground truth",
+    kReferenceParams, [](const Params& p) -> std::unique_ptr<Technique> {
+        return std::make_unique<Reference>(p);
+    }};
+
+}  // namespace penumbra::techniques

@@ -1,0 +1,9 @@
+// The TechniqueInfo of each technique, defined in its own file and listed by registry.cpp.
+#pragma once
+
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::techniques {
+extern const TechniqueInfo kHardTechnique;
+extern const TechniqueInfo kReferenceTechnique;
+}  // namespace penumbra::techniques

@@ -1,0 +1,46 @@
+// The technique interface: a parameter table and a renderer of visibility. A technique never
+// times itself, parses JSON or writes files; the frame loop does that around it.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "renderer/core/params.h"
+#include "renderer/gl/context.h"
+#include "renderer/passes/gpu_scene.h"
+#include "renderer/render/frame_context.h"
+
+namespace penumbra::techniques {
+
+// A per-pixel diagnostic written to colour 1+i of the output; lights combine by Sum or Max.
+struct DiagnosticChannel {
+    std::string name;  // written as "<technique>.<name>"
+    enum class Combine { Sum, Max } combine = Combine::Max;
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    // Per-scene resources (maps, programs), once before the first frame.
+    virtual void prepare(const gl::ContextInfo& gl, const passes::GpuScene& scene) = 0;
+    // Renders visibility (and diagnostics) of ctx.light into ctx.bindOutput()'s targets.
+    virtual void render(render::FrameContext& ctx) = 0;
+    virtual std::vector<DiagnosticChannel> diagnostics() const { return {}; }
+};
+
+struct TechniqueInfo {
+    std::string_view name;
+    std::string_view summary;
+    std::span<const ParamSpec> params;  // the one source of truth for -D, JSON, docs, output
+    std::unique_ptr<Technique> (*create)(const Params&);
+};
+
+// Every registered technique, in listing order.
+std::span<const TechniqueInfo> allTechniques();
+// The technique called NAME, or nullptr.
+const TechniqueInfo* findTechnique(std::string_view name);
+
+}  // namespace penumbra::techniques
