@@ -9,10 +9,14 @@ bool parseBackendFlag(ArgCursor& c, gl::ContextRequest& request) {
             request.backend = gl::Backend::Auto;
         else if (*v == "egl")
             request.backend = gl::Backend::Egl;
+        else if (*v == "egl-device")
+            request.backend = gl::Backend::EglDevice;
+        else if (*v == "egl-surfaceless")
+            request.backend = gl::Backend::EglSurfaceless;
         else if (*v == "osmesa")
             request.backend = gl::Backend::OSMesa;
         else
-            c.fail("--backend: expected auto, egl or osmesa, got '" + *v + "'");
+            c.fail("--backend: expected auto, egl, egl-device, egl-surfaceless or osmesa, got '" + *v + "'");
         return true;
     }
     if (auto v = c.option("", "--device")) {

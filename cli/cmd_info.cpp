@@ -9,7 +9,8 @@
 namespace penumbra::cli {
 namespace {
 
-constexpr const char* kHelp = R"(usage: penumbra info [--json] [--backend auto|egl|osmesa] [--device N]
+constexpr const char* kHelp = R"(usage: penumbra info [--json] [--backend auto|egl|egl-device|egl-surfaceless|osmesa]
+                     [--device N]
 
 Creates an OpenGL context the way `render` would and reports what it found: every backend
 tried (EGL device, EGL surfaceless, OSMesa), the EGL devices, the one chosen, its GL vendor,

@@ -24,7 +24,8 @@ options:
   -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2 (default: the scene's animation
                          range, else frame 0)
       --size WxH         image size (same as -D image.width=W -D image.height=H)
-      --backend B        auto (default), egl, osmesa
+      --backend B        auto (default), egl (device, then surfaceless), egl-device,
+                         egl-surfaceless, osmesa
       --device N         EGL device index (see `penumbra info`)
       --skip-existing    skip frames whose EXR already exists
       --warmup N         render each frame N extra times first, untimed

@@ -86,14 +86,15 @@ std::unique_ptr<Context> Context::create(const ContextRequest& request) {
         probes.push_back({name, ctx ? ctx->info_.renderer : why, ctx != nullptr});
     };
     const bool debug = request.debug;
-    if (request.backend == Backend::Auto || request.backend == Backend::Egl) {
+    const Backend b = request.backend;
+    const bool any_egl = b == Backend::Auto || b == Backend::Egl;
+    if (any_egl || b == Backend::EglDevice)
         attempt("egl-device", [&](std::string& why) {
             return createEglDeviceContext(request.device, debug, why);
         });
-        if (!request.device)
-            attempt("egl-surfaceless",
-                    [&](std::string& why) { return createEglSurfacelessContext(debug, why); });
-    }
+    if ((any_egl && !request.device) || b == Backend::EglSurfaceless)
+        attempt("egl-surfaceless",
+                [&](std::string& why) { return createEglSurfacelessContext(debug, why); });
     if (request.backend == Backend::Auto || request.backend == Backend::OSMesa)
         attempt("osmesa", [&](std::string& why) { return createOSMesaContext(debug, why); });
     if (!ctx) {

@@ -11,7 +11,8 @@
 
 namespace penumbra::gl {
 
-enum class Backend { Auto, Egl, OSMesa };
+// Egl tries the device platform, then surfaceless; the two may also be asked for alone.
+enum class Backend { Auto, Egl, EglDevice, EglSurfaceless, OSMesa };
 
 struct ContextRequest {
     Backend backend = Backend::Auto;

@@ -5,6 +5,7 @@
 #include <dlfcn.h>
 #include <glad/gl.h>
 
+#include <cstdlib>
 #include <vector>
 
 namespace penumbra::gl {
@@ -59,8 +60,17 @@ private:
 
 std::unique_ptr<Context> createOSMesaContext(bool /*debug*/, std::string& why) {
     void* lib = nullptr;
+    // PENUMBRA_OSMESA_LIBRARY names another build of libOSMesa (e.g. a Mesa built by hand).
+    const char* override_name = std::getenv("PENUMBRA_OSMESA_LIBRARY");
+    if (override_name && *override_name) {
+        lib = dlopen(override_name, RTLD_NOW | RTLD_LOCAL);
+        if (!lib) {
+            why = std::string("PENUMBRA_OSMESA_LIBRARY=") + override_name + ": " + dlerror();
+            return nullptr;
+        }
+    }
     for (const char* name : {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so"})
-        if ((lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
+        if (!lib && (lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
     if (!lib) {
         why = "libOSMesa not found (Debian package libosmesa6)";
         return nullptr;

@@ -16,9 +16,7 @@
 #include "renderer/output/exr.h"
 #include "renderer/output/preview.h"
 #include "renderer/output/timing.h"
-#include "renderer/passes/gbuffer.h"
-#include "renderer/passes/shade.h"
-#include "renderer/render/frame_image.h"
+#include "renderer/render/frame_renderer.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::render {
@@ -147,15 +145,8 @@ int runRenderJob(const RenderRequest& req) {
     // 3. Per-run GPU resources.
     const int width = first.image.width, height = first.image.height;
     const int lights = static_cast<int>(first.lights.size());
-    passes::GpuScene gpu(first);
-    passes::GBuffer gbuffer(width, height);
-    passes::Shade shade(width, height);
-    auto technique = info.create(params);
-    auto diagnostics = technique->diagnostics();
-    OutputTargets targets(width, height, lights, static_cast<int>(diagnostics.size()));
-    technique->prepare(glinfo, gpu);
+    FrameRenderer renderer(glinfo, first, info, params);
     PassTimer timer(glinfo.software);
-    gl::checkErrors("prepare");
 
     const nlohmann::json backend = {{"api", glinfo.api},       {"device", glinfo.device},
                                     {"vendor", glinfo.vendor}, {"renderer", glinfo.renderer},
@@ -172,28 +163,13 @@ int runRenderJob(const RenderRequest& req) {
         progress.frame(fi, plan.frame);
         try {
             scene::Scene s = source.at(plan.frame);
-            Params frame_params = resolveFor(info, s);
-            if (frame_params.json() != params.json()) {
-                params = frame_params;
-                technique = info.create(params);
-                technique->prepare(glinfo, gpu);
-            }
-            gpu.update(s);
-            const passes::CameraMatrices camera = passes::cameraMatrices(s.camera, width, height);
+            renderer.setParams(resolveFor(info, s));
             output::FrameReport report;
             std::map<std::string, size_t> pass_index;
             nlohmann::json stats;
             for (int run = 0; run < req.warmup + req.repeat; ++run) {
-                stats = nlohmann::json::object();
                 auto frame_start = Clock::now();
-                FrameContext ctx(s, gpu, gbuffer, camera, targets, timer, stats);
-                ctx.pass("gbuffer", [&] { gbuffer.render(gpu, camera); });
-                for (int l = 0; l < lights; ++l) {
-                    ctx.light = l;
-                    technique->render(ctx);
-                }
-                ctx.light = 0;
-                ctx.pass("shade", [&] { shade.render(gbuffer, targets.visibility(), s.lights); });
+                stats = renderer.render(s, timer);
                 glFinish();
                 double frame_ms =
                     std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
@@ -207,16 +183,14 @@ int runRenderJob(const RenderRequest& req) {
                 }
             }
             auto read_start = Clock::now();
-            output::Image image = readFrameImage(gbuffer, shade, targets, lights,
-                                                 std::string(info.name), diagnostics);
-            gl::checkErrors("readback");
+            output::Image image = renderer.readImage();
             report.passes.push_back(
                 {"readback", "cpu",
                  {std::chrono::duration<double, std::milli>(Clock::now() - read_start).count()}});
             image.attributes = {{"penumbra/version", PENUMBRA_VERSION},
                                 {"penumbra/commit", PENUMBRA_COMMIT},
                                 {"penumbra/technique", std::string(info.name)},
-                                {"penumbra/params", params.json().dump()},
+                                {"penumbra/params", renderer.params().json().dump()},
                                 {"penumbra/scene", req.scene.string()},
                                 {"penumbra/frame", std::to_string(plan.frame)},
                                 {"penumbra/backend", glinfo.api},
@@ -228,13 +202,13 @@ int runRenderJob(const RenderRequest& req) {
             report.scene = req.scene.string();
             report.frame = plan.frame;
             report.technique = std::string(info.name);
-            report.params = params.json();
+            report.params = renderer.params().json();
             report.backend = backend;
             report.width = width;
             report.height = height;
             report.warmup = req.warmup;
             report.stats = stats;
-            report.stats["triangles"] = gpu.triangleCount();
+            report.stats["triangles"] = renderer.gpuScene().triangleCount();
             report.stats["lights"] = lights;
             report.output = {{"exr", plan.exr}};
             if (!plan.preview.empty()) report.output["preview"] = plan.preview;

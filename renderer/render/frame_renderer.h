@@ -1,0 +1,54 @@
+// Renders frames of one scene with one technique on the current GL context: the G-buffer,
+// the technique once per light, the shade pass; and reads the result back as an Image.
+// Used by the render job and by the GL tests.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/core/params.h"
+#include "renderer/gl/context.h"
+#include "renderer/output/image.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/shade.h"
+#include "renderer/render/frame_context.h"
+#include "renderer/render/pass_timer.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::render {
+
+class FrameRenderer {
+public:
+    // Uploads FIRST's models and creates the technique INFO with PARAMS.
+    FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& first,
+                  const techniques::TechniqueInfo& info, const Params& params);
+
+    // Recreates the technique when PARAMS differ from the current ones.
+    void setParams(const Params& params);
+    // Renders SCENE (same objects as FIRST, animated values) with every pass timed by TIMER.
+    // Returns the technique statistics of this render.
+    nlohmann::json render(const scene::Scene& scene, PassTimer& timer);
+    // The last render as an image (channels of PRODUCT.md, no attributes).
+    output::Image readImage() const;
+
+    const passes::GpuScene& gpuScene() const { return gpu_; }
+    const Params& params() const { return params_; }
+
+private:
+    const gl::ContextInfo& gl_;
+    const techniques::TechniqueInfo& info_;
+    Params params_;
+    int width_, height_, lights_;
+    passes::GpuScene gpu_;
+    passes::GBuffer gbuffer_;
+    passes::Shade shade_;
+    std::unique_ptr<techniques::Technique> technique_;
+    std::vector<techniques::DiagnosticChannel> diagnostics_;
+    std::unique_ptr<OutputTargets> targets_;
+};
+
+}  // namespace penumbra::render

@@ -1,0 +1,50 @@
+// The GL test environment: see gl_test_env.h.
+#include "gl_test_env.h"
+
+#include "renderer/gl/debug.h"
+#include "renderer/render/frame_renderer.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::testing {
+namespace {
+
+std::unique_ptr<gl::Context>& context() {
+    static std::unique_ptr<gl::Context> ctx;
+    return ctx;
+}
+
+}  // namespace
+
+const gl::ContextInfo& glInfo() {
+    if (!context()) {
+        context() = gl::Context::create({});
+        gl::enableDebugOutput(false);
+    }
+    return context()->info();
+}
+
+output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
+                          int frame) {
+    const gl::ContextInfo& info = glInfo();
+    auto source = scene::SceneSource::load(std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name,
+                                           overrides);
+    scene::Scene s = source.at(frame);
+    const auto* technique = techniques::findTechnique(s.technique.value("name", "hard"));
+    if (!technique) throw std::runtime_error("unknown technique in " + name);
+    Params params = resolveParams(technique->params, s.technique, name + ": technique");
+    render::FrameRenderer renderer(info, s, *technique, params);
+    render::PassTimer timer(info.software);
+    renderer.render(s, timer);
+    timer.finishFrame();
+    output::Image image = renderer.readImage();
+    gl::checkErrors(name);  // no GL error after any render
+    return image;
+}
+
+const std::vector<float>& channel(const output::Image& image, const std::string& name) {
+    const auto* c = image.find(name);
+    if (!c) throw std::runtime_error("no channel " + name);
+    return c->pixels;
+}
+
+}  // namespace penumbra::testing
