@@ -13,7 +13,11 @@ namespace penumbra {
 
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
     std::filesystem::path dir = path.parent_path();
-    std::string name = "." + path.filename().string() + "." + std::to_string(::getpid()) + ".tmp";
+    std::string name = ".";
+    name += path.filename().string();
+    name += ".";
+    name += std::to_string(::getpid());
+    name += ".tmp";
     return dir.empty() ? std::filesystem::path(name) : dir / name;
 }
 

@@ -8,8 +8,10 @@ namespace {
 
 std::string padded(int frame, size_t width) {
     std::string digits = std::to_string(frame < 0 ? -static_cast<long>(frame) : frame);
-    if (digits.size() < width) digits.insert(0, width - digits.size(), '0');
-    return frame < 0 ? "-" + digits : digits;
+    std::string out = frame < 0 ? "-" : "";
+    if (digits.size() < width) out.append(width - digits.size(), '0');
+    out += digits;
+    return out;
 }
 
 size_t extensionStart(std::string_view path) {
@@ -38,9 +40,11 @@ std::string expandFramePattern(std::string_view pattern, int frame, bool several
     }
     if (replaced || !several_frames) return out;
     size_t dot = extensionStart(out);
-    std::string number = "." + padded(frame, 4);
+    std::string number = ".";
+    number += padded(frame, 4);
     if (dot == std::string::npos) return out + number;
-    return out.substr(0, dot) + number + out.substr(dot);
+    out.insert(dot, number);
+    return out;
 }
 
 std::string replaceExtension(std::string_view path, std::string_view ext) {

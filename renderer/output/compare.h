@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,46 +16,70 @@ namespace penumbra::output {
 struct CompareOptions {
     double fail = 1e-6;         // a pixel fails when any channel differs by more than this
     double fail_percent = 0.0;  // ... and the test fails when more than this % of pixels fail
-    double warn = 1e-6;
+    double warn = 1e-6;         // same pair for the warning verdict
     double warn_percent = 0.0;
-    std::optional<double> hard_fail;  // any difference above this fails outright
-    std::vector<std::string> channels;  // empty: every channel both images have... see compare.cpp
+    std::optional<double> hard_fail;    // any difference above this fails outright
+    std::vector<std::string> channels;  // empty: every channel of the reference
 };
 
 enum class Verdict { Pass = 0, Warn = 1, Fail = 2 };
 
+// "pass", "warn", "fail".
+const char* verdictName(Verdict verdict);
+
+// Metrics of one channel. A difference involving NaN or inf is infinite: it counts in `max`
+// and `nonfinite`, while mae, rmse and p99 are taken over the finite differences only.
 struct ChannelMetrics {
     std::string name;
     double mae = 0, rmse = 0, max = 0, p99 = 0;
     int max_x = 0, max_y = 0;
+    long nonfinite = 0;  // samples where either image holds NaN or inf
 };
 
 struct CompareResult {
     Verdict verdict = Verdict::Pass;
+    CompareOptions options;  // the thresholds the verdict used
     int width = 0, height = 0;
-    std::vector<std::string> channels;  // the channels compared
+    std::vector<std::string> channels;           // the channels compared, in order
     double mae = 0, rmse = 0, max = 0, p99 = 0;  // over all compared channels and pixels
     int max_x = 0, max_y = 0;
     std::string max_channel;
-    double fail_fraction = 0;  // share of pixels failing the fail threshold
+    long nonfinite = 0;        // compared samples with NaN or inf in either image
+    long fail_pixels = 0;      // pixels with a channel differing by more than options.fail
+    long warn_pixels = 0;      // ... by more than options.warn
+    double fail_fraction = 0;  // fail_pixels / (width * height)
     double warn_fraction = 0;
-    // mean |ref - test| of `visibility` over pixels where either is below 0.999 (absent without
-    // a visibility channel in both, or when no pixel is in shadow in either).
+    // Mean |ref - test| of `visibility` over pixels where either is below 0.999, and their
+    // count. Both absent without a visibility channel in both images; shadow_mae is also absent
+    // when no pixel is in shadow in either. Pixels with non-finite visibility are left out.
     std::optional<double> shadow_mae;
     std::optional<long> shadow_pixels;
     std::vector<ChannelMetrics> per_channel;
+
+    // snake_case keys; infinite values (max after a NaN) become null.
     nlohmann::json toJson() const;
 };
 
-// Thrown when sizes or the requested channels do not match (compare exits 3).
+// Thrown when sizes or the requested channels do not match (compare exits 3). The message
+// names the side ("reference" or "test") and the channel; `side` says which file is at fault.
 class CompareMismatch : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    enum class Side { Both, Reference, Test };
+    CompareMismatch(Side side, const std::string& message)
+        : std::runtime_error(message), side_(side) {}
+    Side side() const { return side_; }
+
+private:
+    Side side_;
 };
+
+// Visibility below this counts as shadow for shadow_mae.
+inline constexpr double kShadowVisibility = 0.999;
 
 CompareResult compareImages(const Image& ref, const Image& test, const CompareOptions& options);
 
-// Absolute difference per compared channel (same channel names), for `compare --diff`.
+// Absolute difference per compared channel (same channel names, stored as float; infinite where
+// either image is NaN or inf), for `compare --diff`. Throws CompareMismatch like compareImages.
 Image differenceImage(const Image& ref, const Image& test, const CompareOptions& options);
 
 }  // namespace penumbra::output

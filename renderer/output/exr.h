@@ -16,12 +16,17 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Writes IMAGE to PATH atomically (core/atomic_file.h; ZIP compression). Creates missing parent folders.
-// Throws RuntimeError naming PATH on failure; nothing is left under PATH then.
+// Writes IMAGE to PATH atomically (core/atomic_file.h; ZIP compression, increasing Y, each
+// channel as its `type`, attributes as string attributes). Creates missing parent folders.
+// Throws RuntimeError naming PATH on failure (also for an empty image, a channel of the wrong
+// size, duplicate channel names, or an attribute named like a standard one such as
+// "compression"); nothing is left under PATH then.
 void writeExr(const std::filesystem::path& path, const Image& image);
 
-// Reads every channel (as float) and the string attributes. Throws UnreadableImage.
+// Reads every channel (as float; `type` says how it was stored) and the string attributes.
+// Channels come in the order R, G, B, A, then the others alphabetically (EXR stores channels
+// sorted by name, so the writer's order is not kept). Throws UnreadableImage naming PATH for a
+// missing, unreadable, corrupt or truncated file, or one that is not a flat OpenEXR image.
 Image readExr(const std::filesystem::path& path);
-
 
 }  // namespace penumbra::output

@@ -37,11 +37,11 @@ private:
 
 class FrameContext {
 public:
-    FrameContext(const scene::Scene& scene, const passes::GpuScene& gpu,
-                 const passes::GBuffer& gbuffer, const passes::CameraMatrices& camera,
-                 OutputTargets& targets, PassTimer& timer, nlohmann::json& stats)
-        : scene(scene), gpu(gpu), gbuffer(gbuffer), camera(camera), targets_(targets),
-          timer_(timer), stats(stats) {}
+    FrameContext(const scene::Scene& s, const passes::GpuScene& g, const passes::GBuffer& gb,
+                 const passes::CameraMatrices& cam, OutputTargets& targets, PassTimer& timer,
+                 nlohmann::json& st)
+        : scene(s), gpu(g), gbuffer(gb), camera(cam), targets_(targets), timer_(timer),
+          stats(st) {}
 
     const scene::Scene& scene;
     const passes::GpuScene& gpu;

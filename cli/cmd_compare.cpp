@@ -1,0 +1,230 @@
+// `penumbra compare REF.exr TEST.exr`: golden-image diff with OpenImageIO idiff's thresholds,
+// summary and exit codes (0 pass, 1 warn, 2 fail, 3 size or channel mismatch, 4 unreadable).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "renderer/core/error.h"
+#include "renderer/output/compare.h"
+#include "renderer/output/exr.h"
+
+namespace penumbra::cli {
+
+namespace {
+
+constexpr int kExitMismatch = 3;
+constexpr int kExitUnreadable = 4;
+
+constexpr const char* kCompareUsage = R"(usage: penumbra compare REF.exr TEST.exr [options]
+
+Compares TEST against the reference REF like OpenImageIO's idiff. A pixel fails when any
+compared channel differs by more than --fail; the result is FAILURE when more than
+--failpercent % of the pixels fail or any difference exceeds --hardfail, else WARNING by the
+same rule with --warn and --warnpercent, else PASS. NaN or inf in either image always fails.
+
+options:
+  --fail A           per-channel difference a pixel may have before it fails (default 1e-6)
+  --failpercent P    % of pixels allowed to fail (default 0)
+  --warn A           per-channel difference before a pixel warns (default 1e-6)
+  --warnpercent P    % of pixels allowed to warn (default 0)
+  --hardfail A       any difference above A fails outright (default: none)
+  --channels C,C,..  channels to compare, e.g. R,G,B or visibility (default: all of REF's)
+  --diff OUT.exr     write |REF - TEST| of the compared channels (written even on failure)
+  --json             print only a JSON object with every metric on stdout
+  --help             print this help
+  (idiff's spellings -fail, -failpercent, -warn, -warnpercent, -hardfail also work)
+
+exit status: 0 pass, 1 warning, 2 failure or bad command line, 3 size or channel mismatch,
+4 unreadable file.
+)";
+
+struct CompareArgs {
+    std::string ref, test;
+    output::CompareOptions options;
+    std::string diff;
+    bool json = false;
+};
+
+double parseThreshold(const ArgCursor& c, std::string_view flag, const std::string& text) {
+    const double v = parseDouble(c, flag, text);
+    if (v < 0) c.fail(std::string(flag) + ": must be >= 0, got '" + text + "'");
+    return v;
+}
+
+double parsePercent(const ArgCursor& c, std::string_view flag, const std::string& text) {
+    const double v = parseDouble(c, flag, text);
+    if (v < 0 || v > 100) c.fail(std::string(flag) + ": must be in [0, 100], got '" + text + "'");
+    return v;
+}
+
+std::vector<std::string> parseChannels(const ArgCursor& c, const std::string& text) {
+    std::vector<std::string> names;
+    std::set<std::string> seen;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = text.find(',', start);
+        std::string name =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (name.empty()) c.fail("--channels: empty channel name in '" + text + "'");
+        if (!seen.insert(name).second) c.fail("--channels: channel '" + name + "' is listed twice");
+        names.push_back(std::move(name));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return names;
+}
+
+CompareArgs parseArgs(const Args& args) {
+    ArgCursor c("compare", args);
+    CompareArgs a;
+    std::vector<std::string> files;
+    std::optional<std::string> v;
+    while (!c.done()) {
+        if ((v = c.option("-fail", "--fail"))) {
+            a.options.fail = parseThreshold(c, "--fail", *v);
+        } else if ((v = c.option("-failpercent", "--failpercent"))) {
+            a.options.fail_percent = parsePercent(c, "--failpercent", *v);
+        } else if ((v = c.option("-warn", "--warn"))) {
+            a.options.warn = parseThreshold(c, "--warn", *v);
+        } else if ((v = c.option("-warnpercent", "--warnpercent"))) {
+            a.options.warn_percent = parsePercent(c, "--warnpercent", *v);
+        } else if ((v = c.option("-hardfail", "--hardfail"))) {
+            a.options.hard_fail = parseThreshold(c, "--hardfail", *v);
+        } else if ((v = c.option("", "--channels"))) {
+            a.options.channels = parseChannels(c, *v);
+        } else if ((v = c.option("", "--diff"))) {
+            if (v->empty()) c.fail("--diff: expected a file name");
+            a.diff = *v;
+        } else if (c.flag("", "--json")) {
+            a.json = true;
+        } else if (auto p = c.positional()) {
+            if (files.size() == 2) c.fail("unexpected argument '" + *p + "' (see --help)");
+            files.push_back(*p);
+        } else {
+            c.unknown();
+        }
+    }
+    if (files.size() != 2) c.fail("expected REF.exr and TEST.exr (see --help)");
+    a.ref = files[0];
+    a.test = files[1];
+    return a;
+}
+
+std::string formatValue(double v) {
+    if (std::isinf(v)) return "inf";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+void printSummary(const CompareArgs& a, const output::CompareResult& r) {
+    const long pixels = static_cast<long>(r.width) * r.height;
+    std::string channels;
+    for (const auto& name : r.channels) channels += (channels.empty() ? "" : ",") + name;
+    std::printf("Comparing \"%s\" and \"%s\" (%dx%d, channels %s)\n", a.ref.c_str(), a.test.c_str(),
+                r.width, r.height, channels.c_str());
+    std::printf("  Mean error = %s\n", formatValue(r.mae).c_str());
+    std::printf("  RMS error = %s\n", formatValue(r.rmse).c_str());
+    std::printf("  Max error = %s @ (%d, %d, %s)\n", formatValue(r.max).c_str(), r.max_x, r.max_y,
+                r.max_channel.c_str());
+    std::printf("  99th percentile error = %s\n", formatValue(r.p99).c_str());
+    if (r.nonfinite > 0)
+        std::printf("  %ld samples are NaN or inf (counted as infinite differences)\n",
+                    r.nonfinite);
+    if (r.shadow_pixels) {
+        if (r.shadow_mae)
+            std::printf("  Shadow-region MAE (visibility < %g) = %s over %ld pixels\n",
+                        output::kShadowVisibility, formatValue(*r.shadow_mae).c_str(),
+                        *r.shadow_pixels);
+        else
+            std::printf("  Shadow-region MAE: no pixel has visibility < %g in either image\n",
+                        output::kShadowVisibility);
+    }
+    std::printf("  %ld pixels (%.3g%%) over %s (fail)\n", r.fail_pixels,
+                pixels ? 100.0 * r.fail_fraction : 0.0, formatValue(r.options.fail).c_str());
+    std::printf("  %ld pixels (%.3g%%) over %s (warn)\n", r.warn_pixels,
+                pixels ? 100.0 * r.warn_fraction : 0.0, formatValue(r.options.warn).c_str());
+    if (r.options.hard_fail && r.max > *r.options.hard_fail)
+        std::printf("  Max error exceeds --hardfail %s\n",
+                    formatValue(*r.options.hard_fail).c_str());
+    switch (r.verdict) {
+        case output::Verdict::Pass:
+            std::printf("PASS\n");
+            break;
+        case output::Verdict::Warn:
+            std::printf("WARNING\n");
+            break;
+        case output::Verdict::Fail:
+            std::printf("FAILURE\n");
+            break;
+    }
+}
+
+}  // namespace
+
+int runCompare(const Args& args) {
+    for (const auto& a : args)
+        if (a == "--help" || a == "-h") {
+            std::fputs(kCompareUsage, stdout);
+            return 0;
+        }
+    const CompareArgs a = parseArgs(args);
+
+    output::Image ref, test;
+    try {
+        ref = output::readExr(a.ref);
+        test = output::readExr(a.test);
+    } catch (const output::UnreadableImage& e) {
+        std::fprintf(stderr, "penumbra: compare: %s\n", e.what());
+        return kExitUnreadable;
+    }
+
+    output::CompareResult result;
+    try {
+        result = output::compareImages(ref, test, a.options);
+    } catch (const output::CompareMismatch& e) {
+        using Side = output::CompareMismatch::Side;
+        const std::string& file = e.side() == Side::Test ? a.test : a.ref;
+        if (e.side() == Side::Both)
+            std::fprintf(stderr, "penumbra: compare: %s vs %s: %s\n", a.ref.c_str(), a.test.c_str(),
+                         e.what());
+        else
+            std::fprintf(stderr, "penumbra: compare: %s: %s\n", file.c_str(), e.what());
+        return kExitMismatch;
+    }
+
+    // The difference image is written even when the comparison fails; a write failure is an
+    // error of its own (exit 2), never mistaken for a warning.
+    bool diffFailed = false;
+    if (!a.diff.empty()) {
+        try {
+            output::Image diff = output::differenceImage(ref, test, a.options);
+            diff.attributes = {{"penumbra/compare/reference", a.ref},
+                               {"penumbra/compare/test", a.test}};
+            output::writeExr(a.diff, diff);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "penumbra: compare: --diff: %s\n", e.what());
+            diffFailed = true;
+        }
+    }
+
+    if (a.json) {
+        nlohmann::json j = result.toJson();
+        j["reference"] = a.ref;
+        j["test"] = a.test;
+        if (!a.diff.empty()) j["diff"] = diffFailed ? nlohmann::json() : nlohmann::json(a.diff);
+        std::cout << j.dump(2) << std::endl;
+    } else {
+        printSummary(a, result);
+        std::fflush(stdout);
+    }
+    if (diffFailed) return static_cast<int>(ExitCode::BadInput);
+    return static_cast<int>(result.verdict);
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,189 @@
+// OpenEXR reading and writing through OpenEXR's Imf API: see exr.h. Half channels are converted
+// to half buffers for writing; every channel is read into FLOAT slices (OpenEXR converts).
+#include "renderer/output/exr.h"
+
+#include <Imath/ImathBox.h>
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfTestFile.h>
+#include <OpenEXR/ImfThreading.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <mutex>
+#include <new>
+#include <set>
+#include <thread>
+
+#include "renderer/core/atomic_file.h"
+#include "renderer/core/error.h"
+
+namespace penumbra::output {
+
+namespace {
+
+// Images larger than this many samples (width * height * channels) are refused on read: a
+// corrupt header must not make us allocate without bound. 2^32 floats is 16 GiB.
+constexpr int64_t kMaxSamples = int64_t{1} << 32;
+
+// ZIP compression is costly single-threaded; give OpenEXR's global pool some workers once.
+void useWorkerThreads() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        unsigned n = std::thread::hardware_concurrency();
+        if (Imf::globalThreadCount() == 0 && n > 1)
+            Imf::setGlobalThreadCount(static_cast<int>(std::min(n, 8u)));
+    });
+}
+
+// Reading order: R, G, B, A first (as OpenImageIO does), then the rest in the file's
+// alphabetical order.
+int channelRank(const std::string& name) {
+    static const char* const kBeauty[] = {"R", "G", "B", "A"};
+    for (int i = 0; i < 4; ++i)
+        if (name == kBeauty[i]) return i;
+    return 4;
+}
+
+void checkImage(const std::filesystem::path& path, const Image& image) {
+    if (image.width <= 0 || image.height <= 0)
+        throw RuntimeError(path.string() + ": cannot write an empty image (" +
+                           std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
+    if (image.channels.empty()) throw RuntimeError(path.string() + ": image has no channels");
+    const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+    std::set<std::string> names;
+    for (const auto& c : image.channels) {
+        if (c.name.empty()) throw RuntimeError(path.string() + ": a channel has no name");
+        if (!names.insert(c.name).second)
+            throw RuntimeError(path.string() + ": channel '" + c.name + "' appears twice");
+        if (c.pixels.size() != n)
+            throw RuntimeError(path.string() + ": channel '" + c.name + "' holds " +
+                               std::to_string(c.pixels.size()) + " values, expected " +
+                               std::to_string(n));
+    }
+    const Imf::Header standard(1, 1);  // the attributes every EXR header holds
+    for (const auto& [name, value] : image.attributes) {
+        if (name.empty()) throw RuntimeError(path.string() + ": an attribute has no name");
+        if (standard.find(name) != standard.end())
+            throw RuntimeError(path.string() + ": attribute '" + name +
+                               "' clashes with a standard EXR attribute");
+    }
+}
+
+void writeExrFile(const std::filesystem::path& file, const Image& image) {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.lineOrder() = Imf::INCREASING_Y;  // row 0 (top) first
+    for (const auto& [name, value] : image.attributes)
+        header.insert(name, Imf::StringAttribute(value));
+    const Imath::Box2i window = header.dataWindow();
+    const size_t width = static_cast<size_t>(image.width);
+    // OpenEXR converts pixel types on input only: half channels need half buffers.
+    std::vector<std::vector<Imath::half>> halves;
+    halves.reserve(image.channels.size());
+    Imf::FrameBuffer frame;
+    for (const auto& c : image.channels) {
+        if (c.type == PixelType::Half) {
+            header.channels().insert(c.name, Imf::Channel(Imf::HALF));
+            const auto& h = halves.emplace_back(c.pixels.begin(), c.pixels.end());
+            frame.insert(c.name, Imf::Slice::Make(Imf::HALF, h.data(), window, sizeof(Imath::half),
+                                                  sizeof(Imath::half) * width));
+        } else {
+            header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window,
+                                                  sizeof(float), sizeof(float) * width));
+        }
+    }
+    Imf::OutputFile out(file.c_str(), header);
+    out.setFrameBuffer(frame);
+    out.writePixels(image.height);
+}
+
+}  // namespace
+
+void writeExr(const std::filesystem::path& path, const Image& image) {
+    checkImage(path, image);
+    useWorkerThreads();
+    writeAtomically(path, [&](const std::filesystem::path& tmp) { writeExrFile(tmp, image); });
+}
+
+Image readExr(const std::filesystem::path& path) {
+    const std::string where = path.string() + ": ";
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) throw UnreadableImage(where + "no such file");
+    if (std::filesystem::is_directory(status)) throw UnreadableImage(where + "is a folder");
+
+    if (!std::ifstream(path, std::ios::binary))
+        throw UnreadableImage(where + "cannot open: " + std::strerror(errno));
+    bool tiled = false, deep = false, multiPart = false;
+    if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multiPart))
+        throw UnreadableImage(where + "not an OpenEXR file");
+    if (deep) throw UnreadableImage(where + "deep OpenEXR images are not supported");
+
+    useWorkerThreads();
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        const Imath::Box2i window = header.dataWindow();
+        const int64_t width = int64_t{window.max.x} - window.min.x + 1;
+        const int64_t height = int64_t{window.max.y} - window.min.y + 1;
+        if (width <= 0 || height <= 0 || width > INT32_MAX || height > INT32_MAX)
+            throw UnreadableImage(where + "empty or invalid data window");
+
+        std::vector<std::pair<std::string, PixelType>> channels;
+        for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+            if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
+                throw UnreadableImage(where + "channel '" + it.name() +
+                                      "' is subsampled, which is not supported");
+            channels.emplace_back(
+                it.name(), it.channel().type == Imf::HALF ? PixelType::Half : PixelType::Float);
+        }
+        std::stable_sort(channels.begin(), channels.end(), [](const auto& a, const auto& b) {
+            return channelRank(a.first) < channelRank(b.first);
+        });
+        const auto nChannels = static_cast<int64_t>(channels.size());
+        if (nChannels > 0 && width * height > kMaxSamples / nChannels)
+            throw UnreadableImage(where + "image too large (" + std::to_string(width) + "x" +
+                                  std::to_string(height) + ", " + std::to_string(nChannels) +
+                                  " channels)");
+
+        Image image;
+        image.width = static_cast<int>(width);
+        image.height = static_cast<int>(height);
+        image.channels.reserve(static_cast<size_t>(nChannels));
+        const size_t xStride = sizeof(float);
+        const size_t yStride = sizeof(float) * static_cast<size_t>(width);
+        Imf::FrameBuffer frame;
+        for (const auto& [name, type] : channels) {
+            ImageChannel& c = image.add(name, type);
+            frame.insert(c.name,
+                         Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window, xStride, yStride));
+        }
+        if (nChannels > 0) {
+            file.setFrameBuffer(frame);
+            file.readPixels(window.min.y, window.max.y);
+        }
+
+        for (auto it = header.begin(); it != header.end(); ++it)
+            if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+                image.attributes.emplace_back(it.name(), s->value());
+        return image;
+    } catch (const UnreadableImage&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw UnreadableImage(where + "out of memory reading the image");
+    } catch (const std::exception& e) {
+        throw UnreadableImage(where + e.what());
+    }
+}
+
+}  // namespace penumbra::output

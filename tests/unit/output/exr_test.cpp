@@ -1,0 +1,263 @@
+// EXR writing and reading: round trip of half and float channels, dotted names, attributes and
+// row order (checked with OpenImageIO as an independent reader); unreadable files; atomicity.
+#include <Imath/half.h>
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "renderer/core/atomic_file.h"
+#include "renderer/core/error.h"
+#include "renderer/output/exr.h"
+#include "tests/unit/output/scratch_folder.h"
+
+namespace penumbra::output {
+namespace {
+
+using testing::ScratchFolder;
+
+// A 5x3 image (non-square, so a transposed or flipped write shows) holding every kind of
+// channel the renderer writes. Values differ per channel, column and row.
+Image makeImage() {
+    Image image;
+    image.width = 5;
+    image.height = 3;
+    const std::pair<const char*, PixelType> channels[] = {
+        {"R", PixelType::Half},   {"G", PixelType::Half},
+        {"B", PixelType::Half},   {"A", PixelType::Half},
+        {"Z", PixelType::Float},  {"P.X", PixelType::Float},
+        {"N.X", PixelType::Half}, {"visibility", PixelType::Float},
+        {"id", PixelType::Float}, {"adaptive.maps", PixelType::Float},
+    };
+    int k = 0;
+    for (const auto& [name, type] : channels) {
+        ImageChannel& c = image.add(name, type);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                c.pixels[static_cast<size_t>(y * image.width + x)] =
+                    0.1f * static_cast<float>(k) + 0.01f * static_cast<float>(x) +
+                    0.001f * static_cast<float>(y) + 1e-7f;
+        ++k;
+    }
+    image.attributes = {{"penumbra/technique", "adaptive"},
+                        {"penumbra/params", R"({"epsilon":0.01})"},
+                        {"penumbra/scene", "scenes/bunny.json"}};
+    return image;
+}
+
+float roundTripValue(PixelType type, float v) {
+    return type == PixelType::Half ? static_cast<float>(Imath::half(v)) : v;
+}
+
+// The pixels of channel NAME; throws when it is missing (so a test fails instead of crashing).
+const std::vector<float>& pixelsOf(const Image& image, const std::string& name) {
+    if (const ImageChannel* c = image.find(name)) return c->pixels;
+    throw std::runtime_error("no channel '" + name + "'");
+}
+
+std::string attribute(const Image& image, const std::string& name) {
+    for (const auto& [key, value] : image.attributes)
+        if (key == name) return value;
+    return "<missing>";
+}
+
+TEST(Exr, RoundTripKeepsChannelsTypesValuesAndAttributes) {
+    ScratchFolder dir;
+    const Image written = makeImage();
+    const auto path = dir / "sub/folder/frame.0001.exr";  // missing parents are created
+    writeExr(path, written);
+    ASSERT_TRUE(std::filesystem::exists(path));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"sub"});
+
+    const Image read = readExr(path);
+    EXPECT_EQ(read.width, 5);
+    EXPECT_EQ(read.height, 3);
+    ASSERT_EQ(read.channels.size(), written.channels.size());
+    for (const auto& w : written.channels) {
+        SCOPED_TRACE(w.name);
+        const ImageChannel* r = read.find(w.name);
+        ASSERT_NE(r, nullptr);
+        EXPECT_EQ(r->type, w.type);
+        ASSERT_EQ(r->pixels.size(), w.pixels.size());
+        for (size_t i = 0; i < w.pixels.size(); ++i)
+            EXPECT_EQ(r->pixels[i], roundTripValue(w.type, w.pixels[i])) << "pixel " << i;
+    }
+    for (const auto& [key, value] : written.attributes) EXPECT_EQ(attribute(read, key), value);
+
+    // R, G, B, A first, then the file's (alphabetical) order.
+    std::vector<std::string> names;
+    for (const auto& c : read.channels) names.push_back(c.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"R", "G", "B", "A", "N.X", "P.X", "Z",
+                                               "adaptive.maps", "id", "visibility"}));
+}
+
+TEST(Exr, HalfChannelsAreStoredAsHalf) {
+    ScratchFolder dir;
+    Image image;
+    image.width = 1;
+    image.height = 1;
+    image.add("R", PixelType::Half).pixels[0] = 0.1f;
+    image.add("Z", PixelType::Float).pixels[0] = 0.1f;
+    writeExr(dir / "a.exr", image);
+    const Image read = readExr(dir / "a.exr");
+    EXPECT_NE(pixelsOf(read, "R")[0], 0.1f);  // 0.1 is not a half
+    EXPECT_EQ(pixelsOf(read, "R")[0], static_cast<float>(Imath::half(0.1f)));
+    EXPECT_EQ(pixelsOf(read, "Z")[0], 0.1f);
+}
+
+TEST(Exr, RowZeroIsTheTopRowForOtherReaders) {
+    ScratchFolder dir;
+    const Image written = makeImage();
+    const auto path = dir / "rows.exr";
+    writeExr(path, written);
+
+    auto in = OIIO::ImageInput::open(path.string());
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.width, 5);
+    EXPECT_EQ(spec.height, 3);
+    EXPECT_EQ(spec.get_string_attribute("compression"), "zip");
+    EXPECT_EQ(spec.get_string_attribute("penumbra/technique"), "adaptive");
+    std::vector<float> pixels(static_cast<size_t>(spec.width * spec.height * spec.nchannels));
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    for (const auto& w : written.channels) {
+        SCOPED_TRACE(w.name);
+        const int c = spec.channelindex(w.name);
+        ASSERT_GE(c, 0);
+        EXPECT_EQ(spec.channelformat(c),
+                  w.type == PixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 5; ++x)
+                EXPECT_EQ(pixels[static_cast<size_t>((y * 5 + x) * spec.nchannels + c)],
+                          roundTripValue(w.type, w.pixels[static_cast<size_t>(y * 5 + x)]))
+                    << x << "," << y;
+    }
+}
+
+TEST(Exr, OverwritesAnExistingFile) {
+    ScratchFolder dir;
+    Image image;
+    image.width = 2;
+    image.height = 2;
+    image.add("Z", PixelType::Float).pixels = {1, 2, 3, 4};
+    writeExr(dir / "a.exr", image);
+    image.channels[0].pixels = {5, 6, 7, 8};
+    writeExr(dir / "a.exr", image);
+    EXPECT_EQ(pixelsOf(readExr(dir / "a.exr"), "Z"), (std::vector<float>{5, 6, 7, 8}));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"a.exr"});
+}
+
+TEST(Exr, ReadMissingFileThrowsUnreadable) {
+    ScratchFolder dir;
+    try {
+        readExr(dir / "nope.exr");
+        FAIL() << "no exception";
+    } catch (const UnreadableImage& e) {
+        EXPECT_NE(std::string(e.what()).find("nope.exr"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(readExr(dir.path()), UnreadableImage);  // a folder
+}
+
+TEST(Exr, ReadTextFileThrowsUnreadable) {
+    ScratchFolder dir;
+    std::ofstream(dir / "text.exr") << "this is not an image\n";
+    EXPECT_THROW(readExr(dir / "text.exr"), UnreadableImage);
+    std::ofstream(dir / "empty.exr").close();
+    EXPECT_THROW(readExr(dir / "empty.exr"), UnreadableImage);
+}
+
+TEST(Exr, ReadTruncatedFileThrowsUnreadable) {
+    ScratchFolder dir;
+    Image image;
+    image.width = 64;
+    image.height = 64;
+    ImageChannel& c = image.add("Z", PixelType::Float);
+    uint32_t state = 12345;  // noise, so ZIP cannot shrink the pixel data to nothing
+    for (float& v : c.pixels) {
+        state = state * 1664525u + 1013904223u;
+        v = static_cast<float>(state >> 8) / 16777216.0f;
+    }
+    const auto path = dir / "truncated.exr";
+    writeExr(path, image);
+    const auto size = std::filesystem::file_size(path);
+    ASSERT_GT(size, 4000u);
+    for (auto keep : {size / 2, size - 7, uintmax_t{400}, uintmax_t{20}}) {
+        SCOPED_TRACE(keep);
+        writeExr(path, image);
+        std::filesystem::resize_file(path, keep);
+        EXPECT_THROW(readExr(path), UnreadableImage);
+    }
+}
+
+TEST(Exr, FailedWriteLeavesNothingBehind) {
+    ScratchFolder dir;
+    Image image;
+    image.width = 2;
+    image.height = 1;
+    image.add("R", PixelType::Half);
+
+    // The final name is a folder: the rename fails after the temporary file was written.
+    std::filesystem::create_directories(dir / "taken.exr/inside");
+    EXPECT_THROW(writeExr(dir / "taken.exr", image), RuntimeError);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken.exr"});
+    EXPECT_TRUE(std::filesystem::is_directory(dir / "taken.exr"));
+
+    // A header attribute OpenEXR refuses: the write fails before any pixel.
+    Image clash = image;
+    clash.attributes = {{"compression", "none"}};
+    EXPECT_THROW(writeExr(dir / "clash.exr", clash), RuntimeError);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken.exr"});
+
+    // The parent is a file, so the folder cannot be created.
+    std::ofstream(dir / "file").close();
+    EXPECT_THROW(writeExr(dir / "file/a.exr", image), RuntimeError);
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"file", "taken.exr"}));
+}
+
+TEST(Exr, WriteIntoUnwritableFolderThrowsAndLeavesNothing) {
+    ScratchFolder dir;
+    Image image;
+    image.width = 2;
+    image.height = 1;
+    image.add("R", PixelType::Half);
+    if (::geteuid() != 0) {
+        const auto locked = dir / "locked";
+        std::filesystem::create_directories(locked);
+        std::filesystem::permissions(
+            locked, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+        EXPECT_THROW(writeExr(locked / "a.exr", image), RuntimeError);
+        std::filesystem::permissions(locked, std::filesystem::perms::owner_all);
+        EXPECT_TRUE(std::filesystem::is_empty(locked));
+    }
+    // Not even root can create files in /proc.
+    if (std::filesystem::exists("/proc/self")) {
+        const std::filesystem::path path = "/proc/penumbra-output-test.exr";
+        EXPECT_THROW(writeExr(path, image), RuntimeError);
+        EXPECT_FALSE(std::filesystem::exists(path));
+        EXPECT_FALSE(std::filesystem::exists(temporaryPathFor(path)));
+    }
+}
+
+TEST(Exr, WriteRejectsMalformedImages) {
+    ScratchFolder dir;
+    Image empty;
+    EXPECT_THROW(writeExr(dir / "a.exr", empty), RuntimeError);
+    Image wrongSize;
+    wrongSize.width = 2;
+    wrongSize.height = 2;
+    wrongSize.add("R", PixelType::Half).pixels.resize(3);
+    EXPECT_THROW(writeExr(dir / "a.exr", wrongSize), RuntimeError);
+    Image twice;
+    twice.width = 1;
+    twice.height = 1;
+    twice.add("R", PixelType::Half);
+    twice.add("R", PixelType::Float);
+    EXPECT_THROW(writeExr(dir / "a.exr", twice), RuntimeError);
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+}  // namespace
+}  // namespace penumbra::output
