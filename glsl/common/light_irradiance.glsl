@@ -16,32 +16,47 @@ float lightIrradianceEdge(vec3 a, vec3 b, vec3 n) {
     return theta * dot(n, c) / lenC;
 }
 
+// Edge a -> b of the light clipped to the receiver's upper hemisphere (da, db: heights of a and
+// b above the horizon plane). Records where the boundary leaves (exit) and re-enters (entry)
+// the hemisphere, so the caller can close the clipped polygon along the horizon.
+float lightIrradianceClippedEdge(vec3 a, vec3 b, float da, float db, vec3 n, inout vec3 exit_point,
+                                 inout vec3 entry_point) {
+    if (da >= 0.0 && db >= 0.0) return lightIrradianceEdge(a, b, n);
+    if (da < 0.0 && db < 0.0) return 0.0;
+    vec3 x = a + (b - a) * (da / (da - db));
+    if (da >= 0.0) {
+        exit_point = x;
+        return lightIrradianceEdge(a, x, n);
+    }
+    entry_point = x;
+    return lightIrradianceEdge(x, b, n);
+}
+
 // Irradiance at p (unit normal n) from a rect light of unit radiance with the given corners (in
 // either winding) emitting toward `forward`; multiply by the radiance (color * intensity).
 // Points on or behind the light's plane get 0. The quad is clipped to the receiver's upper
-// hemisphere first, so a light partly below the horizon is exact and one fully below gives 0.
+// hemisphere first (Sutherland-Hodgman, done edge by edge without a vertex array: dynamic
+// indexing of local arrays is slow on SIMD software rasterisers such as llvmpipe), so a light
+// partly below the horizon is exact and one fully below gives 0.
 float rectLightIrradiance(vec3 corners[4], vec3 forward, vec3 p, vec3 n) {
     vec3 centre = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
     if (!(dot(p - centre, forward) > 0.0)) return 0.0;
-
-    // Sutherland-Hodgman against the horizon: keep dot(v, n) >= 0, v = corner - p. A convex quad
-    // gives at most 5 vertices; 6 covers the alternating signs rounding can produce when the
-    // light's plane nearly contains the horizon (where the result is ~0 anyway).
-    vec3 v[6];
-    int count = 0;
-    for (int i = 0; i < 4; ++i) {
-        vec3 a = corners[i] - p;
-        vec3 b = corners[(i + 1) % 4] - p;
-        float da = dot(a, n);
-        float db = dot(b, n);
-        if (da >= 0.0) v[count++] = a;
-        if ((da >= 0.0) != (db >= 0.0)) v[count++] = a + (b - a) * (da / (da - db));
-    }
-    if (count < 3) return 0.0;
-
-    float sum = 0.0;
-    for (int i = 0; i < count; ++i) {
-        sum += lightIrradianceEdge(v[i], v[(i + 1) % count], n);
+    vec3 a0 = corners[0] - p, a1 = corners[1] - p, a2 = corners[2] - p, a3 = corners[3] - p;
+    vec4 d = vec4(dot(a0, n), dot(a1, n), dot(a2, n), dot(a3, n));
+    if (all(lessThan(d, vec4(0.0)))) return 0.0;
+    float sum;
+    if (all(greaterThanEqual(d, vec4(0.0)))) {
+        sum = lightIrradianceEdge(a0, a1, n) + lightIrradianceEdge(a1, a2, n) +
+              lightIrradianceEdge(a2, a3, n) + lightIrradianceEdge(a3, a0, n);
+    } else {
+        // A convex quad crosses the horizon plane once each way: its clipped boundary is the
+        // kept parts of its edges plus the segment from the exit point back to the entry point.
+        vec3 exit_point = vec3(0.0), entry_point = vec3(0.0);
+        sum = lightIrradianceClippedEdge(a0, a1, d.x, d.y, n, exit_point, entry_point) +
+              lightIrradianceClippedEdge(a1, a2, d.y, d.z, n, exit_point, entry_point) +
+              lightIrradianceClippedEdge(a2, a3, d.z, d.w, n, exit_point, entry_point) +
+              lightIrradianceClippedEdge(a3, a0, d.w, d.x, n, exit_point, entry_point);
+        sum += lightIrradianceEdge(exit_point, entry_point, n);
     }
     // The sign follows the winding seen from p; the projected solid angle is the magnitude.
     return 0.5 * abs(sum);

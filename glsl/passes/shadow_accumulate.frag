@@ -17,10 +17,10 @@ uniform float u_depth_bias;     // in linear depth units
 layout(location = 0) out vec4 o_visibility;
 
 float lookup(int layer, SampleView v, vec3 p, vec3 n) {
-    vec3 to_light = v.origin.xyz - p;
-    float dist = dot(-to_light, v.forward.xyz);
-    // A sample below the receiver's horizon is hidden by the receiver's own surface.
-    if (dot(n, to_light) <= 0.0) return 0.0;
+    // No horizon test here: a sample below the receiver's horizon is hidden by the receiver's
+    // own surface where that surface casts shadows (the map shows it), and the irradiance
+    // already leaves that part of the light out, so visibility must not count it twice.
+    float dist = dot(p - v.origin.xyz, v.forward.xyz);
     vec3 q = p + n * (u_normal_offset * v.params.y * max(dist, 0.0));
     vec4 clip = v.view_proj * vec4(q, 1.0);
     if (clip.w <= 0.0) return 1.0;
