@@ -2,3 +2,5 @@
 // renderer/passes/bindings.h, which defines the same numbers for the host.
 #define BINDING_SAMPLE_VIEWS 0
 #define BINDING_LIGHTS 1
+#define BINDING_SAMPLE_LOOKUPS 2
+#define MAX_SAMPLE_LOOKUPS 1024

@@ -7,6 +7,10 @@ struct SampleView {
     vec4 origin;   // xyz: sample point; w: weight of this sample in the average
     vec4 forward;  // xyz: the light's facing direction; w: near distance
     vec4 params;   // x: far distance; y: world size of a texel per unit distance; zw: unused
+    // The same view in the light's frame (right r, up u, forward f), for cheap lookups:
+    vec4 light_origin;  // (o.r, o.u, o.f, near)
+    vec4 frustum;       // (left, bottom, 1 / width, 1 / height) of the frustum at distance 1
+    vec4 depth;         // (1 / (far - near), weight, 0, 0)
 };
 
 layout(std430, binding = BINDING_SAMPLE_VIEWS) readonly buffer SampleViews {

@@ -1,7 +1,15 @@
 #version 450 core
 // Adds sum_k weight_k * lit_k over a batch of light-sample shadow maps to the bound target
 // (additive blending). Normal-offset and constant bias; PCF over a PCF x PCF texel kernel.
+// Every view of a batch shares the light's frame, so the receiver is projected once into that
+// frame and each view costs a few scalar operations and one depth-compare fetch.
 #include "common/sample_view.glsl"
+
+// The three lookup vectors of every view (SampleView's light_origin, frustum, depth), as a
+// uniform block: software rasterisers read uniform blocks far faster than storage buffers.
+layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
+    vec4 u_lookups[3 * MAX_SAMPLE_LOOKUPS];
+};
 
 in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
@@ -13,23 +21,27 @@ uniform int u_count;
 uniform int u_pcf;              // kernel width in texels (1 = a single hard test)
 uniform float u_normal_offset;  // in texels at the receiver's distance
 uniform float u_depth_bias;     // in linear depth units
+uniform vec3 u_light_right;
+uniform vec3 u_light_up;
+uniform vec3 u_light_forward;
+uniform vec3 u_light_centre;
 
 layout(location = 0) out vec4 o_visibility;
 
-float lookup(int layer, SampleView v, vec3 p, vec3 n) {
-    // No horizon test here: a sample below the receiver's horizon is hidden by the receiver's
-    // own surface where that surface casts shadows (the map shows it), and the irradiance
-    // already leaves that part of the light out, so visibility must not count it twice.
-    float dist = dot(p - v.origin.xyz, v.forward.xyz);
-    vec3 q = p + n * (u_normal_offset * v.params.y * max(dist, 0.0));
-    vec4 clip = v.view_proj * vec4(q, 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+// Lit fraction (0 or 1, or the PCF average) of receiver Q (in the light's frame) for the
+// batch's view LAYER.
+float lookup(int layer, vec3 q) {
+    int k = u_view_base + layer;
+    vec4 light_origin = u_lookups[3 * k];
+    vec4 frustum = u_lookups[3 * k + 1];
+    float z = q.z - light_origin.z;
+    float near = light_origin.w;
+    if (z <= near) return 1.0;  // nearer to the light than every caster
+    vec2 uv = ((q.xy - light_origin.xy) / z - frustum.xy) * frustum.zw;
     // Outside every caster's projection, nothing can block this sample.
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    float d = sampleLinearDepth(v, q) - u_depth_bias;
-    if (d <= 0.0) return 1.0;  // nearer to the light than every caster
-    d = min(d, 1.0 - 1e-6);     // beyond the far plane: compare against the farthest caster
+    float d = (z - near) * u_lookups[3 * k + 2].x - u_depth_bias;
+    d = min(d, 1.0 - 1e-6);  // beyond the far plane: compare against the farthest caster
     if (u_pcf <= 1) return texture(u_maps, vec4(uv, float(layer), d));
     vec2 texel = 1.0 / vec2(textureSize(u_maps, 0).xy);
     float sum = 0.0;
@@ -45,10 +57,14 @@ void main() {
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) discard;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+    // Normal offset: a texel's world size at the receiver's distance (from the batch's first
+    // view; every view of a light has nearly the same).
+    float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
+    vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_base].params.y * dist);
+    vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
     float sum = 0.0;
     for (int i = 0; i < u_count; ++i) {
-        SampleView v = u_views[u_view_base + i];
-        sum += v.origin.w * lookup(i, v, pos.xyz, n);
+        sum += u_lookups[3 * (u_view_base + i) + 2].y * lookup(i, q);
     }
     o_visibility = vec4(sum, 0.0, 0.0, 0.0);
 }

@@ -76,6 +76,9 @@ SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
     v.forward = glm::vec4(f, near);
     v.params = glm::vec4(far, std::max(hi_x - lo_x, hi_y - lo_y) / static_cast<float>(map_size),
                          0.0f, 0.0f);
+    v.light_origin = glm::vec4(glm::dot(point, r), glm::dot(point, u), glm::dot(point, f), near);
+    v.frustum = glm::vec4(lo_x, lo_y, 1.0f / (hi_x - lo_x), 1.0f / (hi_y - lo_y));
+    v.depth = glm::vec4(1.0f / (far - near), weight, 0.0f, 0.0f);
     return v;
 }
 
@@ -132,7 +135,8 @@ ShadowAccumulate::ShadowAccumulate()
                                 {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"})) {}
 
 void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base,
-                              int count, const ShadowTestSettings& s) {
+                              int count, const scene::RectLight& light,
+                              const ShadowTestSettings& s) {
     glUseProgram(program_.id());
     glBindTextureUnit(0, gbuffer.position().id());
     glBindTextureUnit(1, gbuffer.normal().id());
@@ -142,6 +146,10 @@ void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batc
     gl::setUniform(program_, "u_pcf", s.pcf);
     gl::setUniform(program_, "u_normal_offset", s.normal_offset);
     gl::setUniform(program_, "u_depth_bias", s.depth_bias);
+    gl::setUniform(program_, "u_light_right", light.right());
+    gl::setUniform(program_, "u_light_up", light.upAxis());
+    gl::setUniform(program_, "u_light_forward", light.forward());
+    gl::setUniform(program_, "u_light_centre", light.position);
     glDisable(GL_DEPTH_TEST);
     fullscreen_.draw();
     glUseProgram(0);
@@ -159,6 +167,27 @@ void SampleViewBuffer::upload(std::span<const SampleView> views) {
         glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(views.size_bytes()),
                              views.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSampleViews, buffer_.id());
+
+    if (views.size() > static_cast<size_t>(kMaxSampleLookups))
+        throw RuntimeError("sample views: " + std::to_string(views.size()) + " views, at most " +
+                           std::to_string(kMaxSampleLookups) + " per light");
+    const size_t lookup_bytes = 3 * sizeof(glm::vec4) * static_cast<size_t>(kMaxSampleLookups);
+    if (!lookups_) {
+        lookups_ = gl::createBuffer("sample lookups");
+        glNamedBufferStorage(lookups_.id(), static_cast<GLsizeiptr>(lookup_bytes), nullptr,
+                             GL_DYNAMIC_STORAGE_BIT);
+    }
+    staging_.clear();
+    for (const auto& v : views) {
+        staging_.push_back(v.light_origin);
+        staging_.push_back(v.frustum);
+        staging_.push_back(v.depth);
+    }
+    if (!staging_.empty())
+        glNamedBufferSubData(lookups_.id(), 0,
+                             static_cast<GLsizeiptr>(staging_.size() * sizeof(glm::vec4)),
+                             staging_.data());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingSampleLookups, lookups_.id());
 }
 
 }  // namespace penumbra::passes

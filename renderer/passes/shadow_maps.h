@@ -22,8 +22,11 @@ struct SampleView {
     glm::vec4 origin{0.0f};   // xyz point, w weight
     glm::vec4 forward{0.0f};  // xyz direction, w near
     glm::vec4 params{0.0f};   // x far, y texel world size per unit distance
+    glm::vec4 light_origin{0.0f};  // (o.r, o.u, o.f, near) in the light's frame
+    glm::vec4 frustum{0.0f};       // (left, bottom, 1/width, 1/height) at distance 1
+    glm::vec4 depth{0.0f};         // (1/(far - near), weight, 0, 0)
 };
-static_assert(sizeof(SampleView) == 112);
+static_assert(sizeof(SampleView) == 160);
 
 // The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
@@ -60,22 +63,25 @@ struct ShadowTestSettings {
 class ShadowAccumulate {
 public:
     ShadowAccumulate();
+    // LIGHT gives the frame (right, up, forward) shared by every view of the batch.
     void render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base, int count,
-                const ShadowTestSettings& settings);
+                const scene::RectLight& light, const ShadowTestSettings& settings);
 
 private:
     gl::Program program_;
     Fullscreen fullscreen_;
 };
 
-// A growable SSBO of SampleViews bound at kBindingSampleViews.
+// A growable SSBO of SampleViews bound at kBindingSampleViews, and their lookup vectors in a
+// uniform block at kBindingSampleLookups (at most kMaxSampleLookups views).
 class SampleViewBuffer {
 public:
     void upload(std::span<const SampleView> views);
 
 private:
-    gl::Buffer buffer_;
+    gl::Buffer buffer_, lookups_;
     size_t capacity_ = 0;
+    std::vector<glm::vec4> staging_;
 };
 
 }  // namespace penumbra::passes
