@@ -77,6 +77,18 @@ nlohmann::json ContextInfo::toJson() const {
 }
 
 std::unique_ptr<Context> Context::create(const ContextRequest& request) {
+    if (request.device) {
+        auto devices = listEglDevices();
+        if (*request.device < 0 || *request.device >= static_cast<int>(devices.size())) {
+            std::string list;
+            for (const auto& d : devices)
+                list += (list.empty() ? "" : ", ") + std::to_string(d.index) + ": " + d.name;
+            throw InputError("--device " + std::to_string(*request.device) + ": no such EGL device (" +
+                             (list.empty() ? std::string("none found") : list) + ")");
+        }
+        if (request.backend == Backend::OSMesa || request.backend == Backend::EglSurfaceless)
+            throw InputError("--device: only the EGL device backend has devices");
+    }
     std::vector<BackendProbe> probes;
     std::unique_ptr<Context> ctx;
     auto attempt = [&](const char* name, auto&& make) {
@@ -95,7 +107,8 @@ std::unique_ptr<Context> Context::create(const ContextRequest& request) {
     if ((any_egl && !request.device) || b == Backend::EglSurfaceless)
         attempt("egl-surfaceless",
                 [&](std::string& why) { return createEglSurfacelessContext(debug, why); });
-    if (request.backend == Backend::Auto || request.backend == Backend::OSMesa)
+    // A chosen device is a promise: no silent fallback to another backend.
+    if ((b == Backend::Auto && !request.device) || b == Backend::OSMesa)
         attempt("osmesa", [&](std::string& why) { return createOSMesaContext(debug, why); });
     if (!ctx) {
         std::string msg = "no usable OpenGL backend; tried ";

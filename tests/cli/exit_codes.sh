@@ -14,6 +14,8 @@ expect_exit 2 "missing SCENE" -- "$PENUMBRA" render
 expect_exit 2 "--size" -- "$PENUMBRA" render "$scene" --size 10by10
 expect_exit 2 "--technique: unknown technique 'nope'" -- "$PENUMBRA" render "$scene" -t nope
 expect_exit 2 "unknown command" -- "$PENUMBRA" frobnicate
+expect_exit 2 "--device 9: no such EGL device" -- "$PENUMBRA" render "$scene" --device 9 -o x.exr
+expect_exit 2 "--backend: expected auto" -- "$PENUMBRA" render "$scene" --backend vulkan -o x.exr
 # 2: bad input, naming the file and key
 expect_exit 2 "no-such.json" -- "$PENUMBRA" render no-such.json -o x.exr
 printf '{"format": "penumbra-scene/1",' >broken.json
