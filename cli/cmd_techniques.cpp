@@ -18,13 +18,22 @@ and a one-line meaning. Set them in the scene's "technique" block or with -D tec
 
 std::string rangeText(const ParamSpec& s) {
     nlohmann::json j = paramSpecJson(s);
-    if (j.contains("range")) return "[" + j["range"][0].dump() + ", " + j["range"][1].dump() + "]";
-    if (j.contains("choices")) {
-        std::string out;
-        for (const auto& c : j["choices"]) out += (out.empty() ? "" : "|") + c.get<std::string>();
-        return out;
+    std::string out;
+    if (j.contains("range")) {
+        out = "[";
+        out += j["range"][0].dump();
+        out += ", ";
+        out += j["range"][1].dump();
+        out += "]";
+    } else if (j.contains("choices")) {
+        for (const auto& c : j["choices"]) {
+            if (!out.empty()) out += '|';
+            out += c.get<std::string>();
+        }
+    } else {
+        out = "true|false";
     }
-    return "true|false";
+    return out;
 }
 
 }  // namespace

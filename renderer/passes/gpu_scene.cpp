@@ -52,6 +52,7 @@ std::unique_ptr<GpuModel> uploadModel(const scene::Model& m) {
         d.first = static_cast<GLintptr>(idx.size() * sizeof(std::uint32_t));
         d.base_vertex = static_cast<GLint>(pos.size());
         d.material = mesh.material;
+        d.has_uvs = mesh.uvs.size() == mesh.positions.size();
         g->draws.push_back(d);
         pos.insert(pos.end(), mesh.positions.begin(), mesh.positions.end());
         nrm.insert(nrm.end(), mesh.normals.begin(), mesh.normals.end());
@@ -143,6 +144,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
                            : 0;
             gl::setUniform(program, "u_base_color", o.model->base_colors[m]);
             int tex = o.model->material_texture[m];
+            if (!d.has_uvs) tex = -1;
             gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
             if (tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
                 glBindTextureUnit(static_cast<GLuint>(texture_unit),

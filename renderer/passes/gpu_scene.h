@@ -32,6 +32,7 @@ struct GpuDraw {
     GLintptr first = 0;     // byte offset into the index buffer
     GLint base_vertex = 0;
     int material = 0;
+    bool has_uvs = false;  // a texture is only sampled where the mesh has coordinates
 };
 
 struct GpuModel {

@@ -1,0 +1,39 @@
+// The assets one scene file uses, each loaded or built once and shared: glTF models by path,
+// environment images by path, and derived models (primitives, tinted glTF copies) by a key.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "renderer/scene/scene.h"
+
+namespace penumbra::scene {
+
+class AssetStore {
+public:
+    // loadGltf(PATH) the first time PATH (made canonical) is asked for. Throws its InputError.
+    std::shared_ptr<const Model> gltf(const std::filesystem::path& path);
+    // loadEnvironmentImage(PATH) the first time PATH is asked for. Throws its InputError.
+    std::shared_ptr<const EnvironmentImage> environment(const std::filesystem::path& path);
+    // MAKE() the first time KEY is asked for. At most kMaxDerived are kept (animated shapes make
+    // a new one per frame); scenes hold their own references, so dropping one is safe.
+    std::shared_ptr<const Model> derived(const std::string& key,
+                                         const std::function<std::shared_ptr<const Model>()>& make);
+
+    // The cache key of PATH: canonical when it exists, else lexically normal.
+    static std::string pathKey(const std::filesystem::path& path);
+
+private:
+    static constexpr std::size_t kMaxDerived = 256;
+
+    std::mutex mutex_;
+    std::map<std::string, std::shared_ptr<const Model>> gltf_;
+    std::map<std::string, std::shared_ptr<const EnvironmentImage>> environments_;
+    std::map<std::string, std::shared_ptr<const Model>> derived_;
+};
+
+}  // namespace penumbra::scene

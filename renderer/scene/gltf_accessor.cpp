@@ -1,0 +1,254 @@
+// Accessor reading: element type and component type checked against what the attribute needs,
+// bufferView and buffer references checked, every byte read proven inside its buffer.
+#include "renderer/scene/gltf_accessor.h"
+
+#include <cstring>
+
+namespace penumbra::scene {
+namespace {
+
+constexpr std::size_t kMaxAccessorElements = std::size_t{1} << 26;
+
+constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
+constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
+constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+
+// What an attribute needs from its accessor.
+struct Expected {
+    int type;                                    // TINYGLTF_TYPE_*
+    std::initializer_list<int> component_types;  // allowed
+    bool integer_indices;                        // indices: unsigned, not normalized
+    const char* description;
+};
+
+std::size_t componentSize(int type) {
+    switch (type) {
+        case kByte:
+        case kUByte:
+            return 1;
+        case kShort:
+        case kUShort:
+            return 2;
+        case kUInt:
+        case kFloat:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+const char* componentName(int type) {
+    switch (type) {
+        case kByte:
+            return "byte";
+        case kUByte:
+            return "unsigned byte";
+        case kShort:
+            return "short";
+        case kUShort:
+            return "unsigned short";
+        case kUInt:
+            return "unsigned int";
+        case kFloat:
+            return "float";
+        default:
+            return "unknown component type";
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "unknown type";
+    }
+}
+
+double decode(const unsigned char* p, int type, bool normalized) {
+    switch (type) {
+        case kByte: {
+            std::int8_t v;
+            std::memcpy(&v, p, 1);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case kUByte:
+            return normalized ? *p / 255.0 : *p;
+        case kShort: {
+            std::int16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case kUShort: {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? v / 65535.0 : v;
+        }
+        case kUInt: {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        default: {
+            float v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+    }
+}
+
+// The bytes of bufferView VIEW, checked against its buffer.
+std::pair<const unsigned char*, std::size_t> viewBytes(const GltfDocument& doc, int view,
+                                                       const std::string& key) {
+    const auto& views = doc.model.bufferViews;
+    if (view < 0 || static_cast<std::size_t>(view) >= views.size())
+        doc.fail(key, "bufferView " + std::to_string(view) + " does not exist");
+    const tinygltf::BufferView& v = views[static_cast<std::size_t>(view)];
+    const auto& buffers = doc.model.buffers;
+    if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= buffers.size())
+        doc.fail(key, "bufferViews." + std::to_string(view) + ": buffer " +
+                          std::to_string(v.buffer) + " does not exist");
+    const std::vector<unsigned char>& data = buffers[static_cast<std::size_t>(v.buffer)].data;
+    if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
+        doc.fail(key, "bufferViews." + std::to_string(view) + " runs past the end of buffers." +
+                          std::to_string(v.buffer) + " (" + std::to_string(data.size()) +
+                          " bytes)");
+    return {data.data() + v.byteOffset, v.byteLength};
+}
+
+// Reads accessor INDEX, calling STORE(element, component, value) for each value, sparse
+// substitutions included (elements without data are left to the caller's zeros).
+template <typename Store>
+std::size_t readAccessor(const GltfDocument& doc, int index, const std::string& key,
+                         const Expected& expected, Store store) {
+    const tinygltf::Accessor& a = accessorAt(doc, index, key);
+    const std::string where = "accessor " + std::to_string(index);
+    bool allowed = false;
+    for (int t : expected.component_types) allowed = allowed || a.componentType == t;
+    if (a.type != expected.type || !allowed)
+        doc.fail(key, where + ": expected " + expected.description + ", got " + typeName(a.type) +
+                          " " + componentName(a.componentType) +
+                          (a.normalized ? " normalized" : ""));
+    const bool normalized = !expected.integer_indices && a.componentType != kFloat;
+    if (normalized && !a.normalized)
+        doc.fail(key, where + ": expected " + expected.description + ", got " +
+                          componentName(a.componentType) + " not normalized");
+    const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    const std::size_t size = componentSize(a.componentType);
+    const std::size_t element = size * static_cast<std::size_t>(components);
+
+    if (a.bufferView >= 0 && a.count > 0) {
+        const auto [bytes, length] = viewBytes(doc, a.bufferView, key + " (" + where + ")");
+        const std::size_t view_stride =
+            doc.model.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride;
+        if (view_stride != 0 && view_stride < element)
+            doc.fail(key, where + ": bufferView byteStride " + std::to_string(view_stride) +
+                              " is smaller than an element (" + std::to_string(element) +
+                              " bytes)");
+        const std::size_t stride = view_stride != 0 ? view_stride : element;
+        const std::uint64_t end =
+            std::uint64_t{a.byteOffset} + std::uint64_t{a.count - 1} * stride + element;
+        if (end > length)
+            doc.fail(key, where + ": needs " + std::to_string(end) + " bytes of bufferView " +
+                              std::to_string(a.bufferView) + ", which has " +
+                              std::to_string(length));
+        for (std::size_t i = 0; i < a.count; ++i) {
+            const unsigned char* p = bytes + a.byteOffset + i * stride;
+            for (int c = 0; c < components; ++c)
+                store(i, c,
+                      decode(p + static_cast<std::size_t>(c) * size, a.componentType, normalized));
+        }
+    } else if (a.bufferView < -1) {
+        doc.fail(key, where + ": bufferView " + std::to_string(a.bufferView) + " does not exist");
+    }
+
+    if (!a.sparse.isSparse) return a.count;
+    const auto& sparse = a.sparse;
+    const std::string skey = key + " (" + where + ".sparse)";
+    if (sparse.count < 1 || static_cast<std::size_t>(sparse.count) > a.count)
+        doc.fail(skey,
+                 "count " + std::to_string(sparse.count) + " not in 1.." + std::to_string(a.count));
+    const auto n = static_cast<std::size_t>(sparse.count);
+    const int index_type = sparse.indices.componentType;
+    if (index_type != kUByte && index_type != kUShort && index_type != kUInt)
+        doc.fail(skey, "indices must be unsigned byte, short or int");
+    const auto [ibytes, ilength] = viewBytes(doc, sparse.indices.bufferView, skey + ".indices");
+    const auto [vbytes, vlength] = viewBytes(doc, sparse.values.bufferView, skey + ".values");
+    const auto ioffset = static_cast<std::size_t>(std::max(0, sparse.indices.byteOffset));
+    const auto voffset = static_cast<std::size_t>(std::max(0, sparse.values.byteOffset));
+    const std::size_t isize = componentSize(index_type);
+    if (std::uint64_t{ioffset} + std::uint64_t{n} * isize > ilength)
+        doc.fail(skey, "indices run past the end of their bufferView");
+    if (std::uint64_t{voffset} + std::uint64_t{n} * element > vlength)
+        doc.fail(skey, "values run past the end of their bufferView");
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto target =
+            static_cast<std::size_t>(decode(ibytes + ioffset + k * isize, index_type, false));
+        if (target >= a.count)
+            doc.fail(skey, "index " + std::to_string(target) + " out of range (" +
+                               std::to_string(a.count) + " elements)");
+        const unsigned char* p = vbytes + voffset + k * element;
+        for (int c = 0; c < components; ++c)
+            store(target, c,
+                  decode(p + static_cast<std::size_t>(c) * size, a.componentType, normalized));
+    }
+    return a.count;
+}
+
+}  // namespace
+
+const tinygltf::Accessor& accessorAt(const GltfDocument& doc, int index, const std::string& key) {
+    if (index < 0 || static_cast<std::size_t>(index) >= doc.model.accessors.size())
+        doc.fail(key, "accessor " + std::to_string(index) + " does not exist");
+    const tinygltf::Accessor& a = doc.model.accessors[static_cast<std::size_t>(index)];
+    if (a.count > kMaxAccessorElements)  // checked before anything is allocated for it
+        doc.fail(key, "accessor " + std::to_string(index) + ": count " + std::to_string(a.count) +
+                          " too large (limit " + std::to_string(kMaxAccessorElements) + ")");
+    return a;
+}
+
+std::vector<glm::vec3> readVec3(const GltfDocument& doc, int index, const std::string& key) {
+    std::vector<glm::vec3> out(accessorAt(doc, index, key).count, glm::vec3(0.0f));
+    readAccessor(doc, index, key, {TINYGLTF_TYPE_VEC3, {kFloat}, false, "VEC3 float"},
+                 [&](std::size_t i, int c, double v) { out[i][c] = static_cast<float>(v); });
+    return out;
+}
+
+std::vector<glm::vec2> readTexcoords(const GltfDocument& doc, int index, const std::string& key) {
+    std::vector<glm::vec2> out(accessorAt(doc, index, key).count, glm::vec2(0.0f));
+    readAccessor(doc, index, key,
+                 {TINYGLTF_TYPE_VEC2,
+                  {kFloat, kUByte, kUShort},
+                  false,
+                  "VEC2 float or normalized unsigned byte/short"},
+                 [&](std::size_t i, int c, double v) { out[i][c] = static_cast<float>(v); });
+    return out;
+}
+
+std::vector<std::uint32_t> readIndices(const GltfDocument& doc, int index, const std::string& key) {
+    std::vector<std::uint32_t> out(accessorAt(doc, index, key).count, 0u);
+    readAccessor(doc, index, key,
+                 {TINYGLTF_TYPE_SCALAR,
+                  {kUByte, kUShort, kUInt},
+                  true,
+                  "SCALAR unsigned byte, short or int"},
+                 [&](std::size_t i, int, double v) { out[i] = static_cast<std::uint32_t>(v); });
+    return out;
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,178 @@
+// Reading a glTF file: JSON (from the file or the GLB container) type-checked, Draco extensions
+// taken out, then tinygltf loads the buffers (external, data URI or GLB) and image bytes.
+#include "renderer/scene/gltf_document.h"
+
+#include <fstream>
+
+#include "renderer/core/error.h"
+#include "renderer/scene/glb_container.h"
+#include "renderer/scene/json_field.h"
+#include "renderer/scene/json_file.h"
+
+namespace penumbra::scene {
+namespace {
+
+bool isIgnorableExtension(const std::string& name) {
+    return name == "KHR_draco_mesh_compression" || name == "KHR_texture_transform" ||
+           name == "KHR_lights_punctual" || name.rfind("KHR_materials_", 0) == 0;
+}
+
+// Removes every primitive's Draco extension (and its indices, which tinygltf would otherwise
+// require to have a bufferView) from DOC, returning them by (mesh, primitive).
+std::map<std::pair<int, int>, DracoReference> takeDraco(nlohmann::json& doc) {
+    std::map<std::pair<int, int>, DracoReference> found;
+    auto meshes = doc.find("meshes");
+    if (meshes == doc.end()) return found;
+    for (std::size_t m = 0; m < meshes->size(); ++m) {
+        auto& primitives = (*meshes)[m]["primitives"];
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            auto& primitive = primitives[p];
+            auto extensions = primitive.find("extensions");
+            if (extensions == primitive.end()) continue;
+            auto draco = extensions->find("KHR_draco_mesh_compression");
+            if (draco == extensions->end()) continue;
+            DracoReference ref;
+            ref.buffer_view = (*draco)["bufferView"].get<int>();
+            if (primitive.contains("indices")) ref.indices = primitive["indices"].get<int>();
+            for (const auto& item : (*draco)["attributes"].items())
+                ref.attributes[item.key()] = item.value().get<int>();
+            found[{static_cast<int>(m), static_cast<int>(p)}] = ref;
+            extensions->erase(draco);
+            primitive.erase("indices");
+        }
+    }
+    return found;
+}
+
+// Keeps image files' bytes undecoded (gltf_texture.cpp decodes the ones a material uses), and
+// never reads bytes tinygltf took from a bufferView: they are checked and read later.
+bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void*) {
+    image->as_is = true;
+    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+    return true;
+}
+
+// File access for tinygltf: only under the glTF's folder (no fallback to the working
+// directory), with the same size limit as the glTF itself.
+bool fileExists(const std::string& path, void* user) {
+    const auto* base = static_cast<const std::string*>(user);
+    if (path.rfind(*base, 0) != 0) return false;
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+std::string expandFilePath(const std::string& path, void*) {
+    return path;
+}
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void*) {
+    try {
+        const std::string bytes = readTextFile(path, path, kMaxGltfFileBytes);
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const InputError& e) {
+        if (err) *err = e.what();
+        return false;
+    }
+}
+bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+    return false;
+}
+
+// URI percent-decoding, as tinygltf applies to buffer URIs before opening them.
+std::string percentDecode(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        const auto hex = [](char c) {
+            if (c >= '0' && c <= '9') return c - '0';
+            if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+            if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+            return -1;
+        };
+        if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+            out += static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+// External buffer files must exist: named here with their key (tinygltf only says "not found").
+void checkBufferFiles(const GltfDocument& doc, const nlohmann::json& json,
+                      const std::string& base_dir) {
+    const auto buffers = json.find("buffers");
+    if (buffers == json.end()) return;
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const auto uri = (*buffers)[i].find("uri");
+        if (uri == (*buffers)[i].end()) continue;
+        const std::string text = uri->get<std::string>();
+        if (text.rfind("data:", 0) == 0) continue;
+        std::error_code ec;
+        const std::filesystem::path file = std::filesystem::path(base_dir) / percentDecode(text);
+        if (!std::filesystem::is_regular_file(file, ec))
+            doc.fail("buffers." + std::to_string(i) + ".uri",
+                     "cannot read '" + text + "' (" +
+                         (std::filesystem::exists(file, ec) ? "not a file" : "no such file") + ")");
+    }
+}
+
+std::string oneLine(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    for (std::size_t i = 0; (i = text.find('\n', i)) != std::string::npos;)
+        text.replace(i, 1, "; ");
+    return text;
+}
+
+}  // namespace
+
+void GltfDocument::fail(const std::string& key, const std::string& what) const {
+    failAt(label, key, what);
+}
+
+GltfDocument readGltfDocument(const std::filesystem::path& path) {
+    GltfDocument doc;
+    doc.label = path.string();
+    const std::string bytes = readTextFile(path, doc.label, kMaxGltfFileBytes);
+    const bool binary = isGlb(bytes);
+    GlbParts glb;
+    if (binary) glb = splitGlb(bytes, doc.label);
+    nlohmann::json json = parseJsonText(binary ? glb.json : bytes, doc.label);
+
+    checkGltfJson(json, doc.label);
+    if (const auto required = json.find("extensionsRequired"); required != json.end())
+        for (const auto& name : *required)
+            if (!isIgnorableExtension(name.get<std::string>()))
+                doc.fail("extensionsRequired",
+                         "unsupported extension '" + name.get<std::string>() + "'");
+    doc.draco = takeDraco(json);
+
+    std::string base_dir = path.parent_path().string();
+    if (base_dir.empty()) base_dir = ".";
+    checkBufferFiles(doc, json, base_dir);
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(keepImageBytes, nullptr);
+    loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &base_dir});
+    std::string err;
+    std::string warn;
+    bool ok = false;
+    try {
+        const std::string text = json.dump();
+        if (binary) {
+            const std::string glb_bytes = assembleGlb(text, glb);
+            ok = loader.LoadBinaryFromMemory(
+                &doc.model, &err, &warn, reinterpret_cast<const unsigned char*>(glb_bytes.data()),
+                static_cast<unsigned int>(glb_bytes.size()), base_dir);
+        } else {
+            ok = loader.LoadASCIIFromString(&doc.model, &err, &warn, text.data(),
+                                            static_cast<unsigned int>(text.size()), base_dir);
+        }
+    } catch (const std::exception& e) {
+        throw InputError(doc.label + ": " + e.what());
+    }
+    if (!ok) throw InputError(doc.label + ": " + oneLine(err.empty() ? warn : err));
+    return doc;
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,36 @@
+// Validating a scene document (after -t/-D and animation) into a Scene: every key checked for
+// type, range and consistency, unknown keys refused, assets taken from an AssetStore.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/scene/asset_store.h"
+#include "renderer/scene/json_field.h"
+#include "renderer/scene/scene.h"
+
+namespace penumbra::scene {
+
+constexpr const char* kSceneFormat = "penumbra-scene/1";
+
+struct SceneContext {
+    std::string file;              // the scene path as given: the start of every error
+    std::filesystem::path folder;  // relative asset paths resolve against it
+    std::string default_name;      // the file's stem
+    int max_image_size = 16384;    // image.width/height limit
+    AssetStore* assets = nullptr;
+};
+
+// Throws InputError("<file>: <dotted key>: <what is wrong>").
+Scene buildScene(const nlohmann::json& doc, const SceneContext& context);
+
+// The "objects" array (object_json.cpp).
+std::vector<Object> buildObjects(const Field& objects, const SceneContext& context);
+
+// PATH resolved against the scene's folder when relative.
+std::filesystem::path resolveAsset(const SceneContext& context, const std::string& path);
+
+}  // namespace penumbra::scene

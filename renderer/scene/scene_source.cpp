@@ -1,0 +1,106 @@
+// SceneSource: the scene file read once (JSON, -t/-D, assets, animation checked at every key
+// frame), then one validated Scene per frame built from the document with the tracks applied.
+#include "renderer/scene/scene_source.h"
+
+#include "renderer/core/error.h"
+#include "renderer/scene/animation.h"
+#include "renderer/scene/asset_store.h"
+#include "renderer/scene/json_field.h"
+#include "renderer/scene/json_file.h"
+#include "renderer/scene/overrides.h"
+#include "renderer/scene/scene_json.h"
+
+namespace penumbra::scene {
+namespace {
+
+constexpr std::size_t kMaxSceneFileBytes = std::size_t{64} << 20;
+
+// E's message without the leading "<file>: ", to be re-prefixed with more context.
+std::string withoutFile(const InputError& e, const std::string& file) {
+    std::string message = e.what();
+    const std::string prefix = file + ": ";
+    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+    return message;
+}
+
+}  // namespace
+
+struct SceneSource::Track {
+    AnimationTrack track;
+};
+
+struct SceneSource::AssetCache {
+    AssetStore store;
+    SceneContext context;
+    std::shared_ptr<const Scene> still;  // the scene when nothing is animated
+};
+
+SceneSource SceneSource::load(const std::filesystem::path& file,
+                              const std::vector<Override>& overrides, const LoadOptions& options) {
+    const std::string label = file.string();
+    nlohmann::json doc = parseJsonText(readTextFile(file, label, kMaxSceneFileBytes), label);
+    if (!doc.is_object()) failAt(label, "", "expected a JSON object, got " + describeType(doc));
+    applyTechniqueOption(doc, options.technique);
+    applyOverrides(doc, overrides);
+
+    SceneSource source;
+    source.path_ = file;
+    source.assets_ = std::make_shared<AssetCache>();
+    SceneContext& context = source.assets_->context;
+    context.file = label;
+    context.folder = file.parent_path();
+    context.default_name = file.stem().string();
+    context.max_image_size = options.max_image_size;
+    context.assets = &source.assets_->store;
+
+    Scene still = buildScene(doc, context);  // every value checked, every asset loaded
+    Animation animation = parseAnimation(doc, label);
+    source.animation_frames_ = animation.frames;
+    for (AnimationTrack& track : animation.tracks)
+        source.tracks_.push_back(std::make_shared<const Track>(Track{std::move(track)}));
+    source.document_ = std::move(doc);
+    if (source.tracks_.empty()) {
+        source.assets_->still = std::make_shared<const Scene>(std::move(still));
+        return source;
+    }
+
+    // Every key frame of every track, and one frame between consecutive keys, must give a valid
+    // scene: a track that drives a value out of range fails here, not in the middle of a render.
+    for (std::size_t t = 0; t < source.tracks_.size(); ++t) {
+        const std::vector<int>& frames = source.tracks_[t]->track.frames;
+        const std::string where = "animation.tracks." + std::to_string(t);
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            try {
+                (void)source.at(frames[k]);
+            } catch (const InputError& e) {
+                failAt(label, where + ".keys." + std::to_string(k),
+                       "at frame " + std::to_string(frames[k]) + ": " + withoutFile(e, label));
+            }
+            if (k + 1 == frames.size() || frames[k + 1] - frames[k] < 2) continue;
+            const int middle = frames[k] + (frames[k + 1] - frames[k]) / 2;
+            try {
+                (void)source.at(middle);
+            } catch (const InputError& e) {
+                failAt(label, where,
+                       "between keys " + std::to_string(k) + " and " + std::to_string(k + 1) +
+                           " (frame " + std::to_string(middle) + "): " + withoutFile(e, label));
+            }
+        }
+    }
+    return source;
+}
+
+Scene SceneSource::at(int frame) const {
+    if (assets_->still) {
+        Scene scene = *assets_->still;
+        scene.frame = frame;
+        return scene;
+    }
+    nlohmann::json doc = document_;
+    for (const auto& track : tracks_) applyTrack(doc, track->track, frame);
+    Scene scene = buildScene(doc, assets_->context);
+    scene.frame = frame;
+    return scene;
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,90 @@
+// Environment maps: .hdr and .exr read as linear RGB, rows top to bottom, grey replicated,
+// and the refusals (wrong type, missing, too large, non-finite pixels).
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "renderer/scene/environment_image.h"
+#include "scene_test_support.h"
+
+namespace penumbra::scene {
+namespace {
+
+using test::expectMessage;
+using test::inputErrorOf;
+
+std::filesystem::path writeExr(const std::string& name, int width, int height, int channels,
+                               const std::vector<float>& pixels) {
+    const auto path = test::scratchDir() / name;
+    auto out = OIIO::ImageOutput::create(path.string());
+    EXPECT_TRUE(out);
+    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+    EXPECT_TRUE(out->open(path.string(), spec));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+    return path;
+}
+
+TEST(EnvironmentImage, ReadsHdrAndExrTopRowFirst) {
+    // Fixtures: 8x4 vertical gradients from (4, 2, 1) at the top to (0, 0, 0.5) at the bottom.
+    for (const char* name : {"sky.hdr", "sky.exr"}) {
+        SCOPED_TRACE(name);
+        const auto image = loadEnvironmentImage(test::dataDir() / name);
+        ASSERT_EQ(image->width, 8);
+        ASSERT_EQ(image->height, 4);
+        ASSERT_EQ(image->rgb.size(), 8u * 4u * 3u);
+        EXPECT_EQ(image->rgb[0], 4.0f);
+        EXPECT_EQ(image->rgb[1], 2.0f);
+        EXPECT_EQ(image->rgb[2], 1.0f);
+        const std::size_t last = (3 * 8 + 7) * 3;
+        EXPECT_EQ(image->rgb[last + 0], 0.0f);
+        EXPECT_EQ(image->rgb[last + 2], 0.5f);
+    }
+}
+
+TEST(EnvironmentImage, GreyIsReplicatedAndNegativesClamped) {
+    const auto path = writeExr("grey.exr", 2, 1, 1, {0.25f, -3.0f});
+    const auto image = loadEnvironmentImage(path);
+    EXPECT_EQ(image->rgb, (std::vector<float>{0.25f, 0.25f, 0.25f, 0, 0, 0}));
+    const auto rgba = writeExr("rgba.exr", 1, 1, 4, {1, 2, 3, 0.5f});
+    EXPECT_EQ(loadEnvironmentImage(rgba)->rgb, (std::vector<float>{1, 2, 3}));
+}
+
+TEST(EnvironmentImage, Refusals) {
+    const auto nan = writeExr("nan.exr", 2, 1, 3, {1, 1, 1, 1, std::nanf(""), 1});
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(nan); }),
+                  nan.string() + ": non-finite pixel at (1, 0)");
+    const auto wide = writeExr("wide.exr", kMaxEnvironmentSize + 1, 1, 1,
+                               std::vector<float>(kMaxEnvironmentSize + 1, 1.0f));
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(wide); }),
+                  wide.string() + ": image too large (16385x1, limit 16384)");
+    const auto missing = test::scratchDir() / "missing.hdr";
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(missing); }),
+                  missing.string() + ": no such file");
+    const auto png = test::scratchDir() / "sky.png";
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(png); }),
+                  png.string() + ": expected an .exr or .hdr file");
+    const auto junk = test::writeFile("junk.exr", "not an image at all");
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(junk); }),
+                  junk.string() + ": cannot read image");
+    const auto dir = test::scratchDir() / "folder.exr";
+    std::filesystem::create_directories(dir);
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": not a file");
+}
+
+TEST(EnvironmentImage, SceneNamesTheKeyAndPath) {
+    nlohmann::json doc = test::minimalScene();
+    doc["environment"] = {{"image", "junk.exr"}};
+    const std::string junk = (test::scratchDir() / "junk.exr").string();
+    test::writeFile("junk.exr", "not an image at all");
+    expectMessage(inputErrorOf([&] { test::loadDoc(doc); }),
+                  (test::scratchDir() / "scene.json").string() + ": environment.image: " + junk +
+                      ": cannot read image");
+    doc["environment"] = {{"image", (test::dataDir() / "sky.exr").string()}, {"intensity", -1}};
+    expectMessage(inputErrorOf([&] { test::loadDoc(doc); }), "environment.intensity: must be >= 0");
+}
+
+}  // namespace
+}  // namespace penumbra::scene
