@@ -4,6 +4,7 @@
 namespace penumbra::render {
 
 void PassTimer::begin(const std::string& name) {
+    if (on_begin) on_begin(name);
     Pending p;
     p.name = name;
     if (software_) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct PassTime {
 class PassTimer {
 public:
     explicit PassTimer(bool software) : software_(software) {}
+    // Called with each pass's name as it begins (progress display); may be empty.
+    std::function<void(const std::string&)> on_begin;
     const char* clockName() const { return software_ ? "cpu_glfinish" : "gl_timer_query"; }
     void begin(const std::string& name);
     void end();

@@ -93,27 +93,42 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
         throw InputError(where + "lights: more lights than this GL's array layers allow");
 }
 
+// "frame i of n (frame f), pass, elapsed, ETA" on one rewritten stderr line (a terminal only).
 class Progress {
 public:
     Progress(bool enabled, size_t total) : enabled_(enabled), total_(total), start_(Clock::now()) {}
     void frame(size_t index, int frame) {
-        if (!enabled_) return;
-        double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
-        double eta = index > 0 ? elapsed / static_cast<double>(index) *
-                                     static_cast<double>(total_ - index)
-                               : 0.0;
-        std::fprintf(stderr, "\rpenumbra: frame %zu of %zu (frame %d), elapsed %.1fs, ETA %.1fs   ",
-                     index + 1, total_, frame, elapsed, eta);
-        std::fflush(stderr);
+        index_ = index;
+        frame_ = frame;
+        show("", true);
     }
+    void pass(const std::string& name) { show(name, false); }
     void done() {
-        if (enabled_) std::fprintf(stderr, "\n");
+        if (enabled_ && shown_) std::fprintf(stderr, "\n");
+        shown_ = false;
     }
 
 private:
+    void show(const std::string& pass, bool force) {
+        if (!enabled_) return;
+        auto now = Clock::now();
+        if (!force && now - last_ < std::chrono::milliseconds(100)) return;
+        last_ = now;
+        double elapsed = std::chrono::duration<double>(now - start_).count();
+        double eta = index_ > 0 ? elapsed / static_cast<double>(index_) *
+                                      static_cast<double>(total_ - index_)
+                                : 0.0;
+        std::fprintf(stderr, "\r\033[Kpenumbra: frame %zu of %zu (frame %d) %-18s elapsed %.1fs",
+                     index_ + 1, total_, frame_, pass.c_str(), elapsed);
+        if (index_ > 0) std::fprintf(stderr, ", ETA %.1fs", eta);
+        std::fflush(stderr);
+        shown_ = true;
+    }
     bool enabled_;
-    size_t total_;
-    Clock::time_point start_;
+    bool shown_ = false;
+    size_t total_, index_ = 0;
+    int frame_ = 0;
+    Clock::time_point start_, last_;
 };
 
 }  // namespace
@@ -153,6 +168,7 @@ int runRenderJob(const RenderRequest& req) {
                                     {"version", glinfo.version}, {"clock", timer.clockName()}};
     const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
     Progress progress(progress_on, plans.size());
+    if (progress_on) timer.on_begin = [&](const std::string& pass) { progress.pass(pass); };
     int failed = 0, written = 0, skipped = 0;
     for (size_t fi = 0; fi < plans.size(); ++fi) {
         const FramePlan& plan = plans[fi];
