@@ -72,8 +72,8 @@ int parseInt(const ArgCursor& c, std::string_view flag, const std::string& text,
     if (text.empty() || ec != std::errc() || ptr != end)
         c.fail(std::string(flag) + ": expected a whole number, got '" + text + "'");
     if (v < min || v > max)
-        c.fail(std::string(flag) + ": " + text + " is out of range [" + std::to_string(min) +
-               ", " + std::to_string(max) + "]");
+        c.fail(std::string(flag) + ": " + text + " is out of range [" + std::to_string(min) + ", " +
+               std::to_string(max) + "]");
     return static_cast<int>(v);
 }
 

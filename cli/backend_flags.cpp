@@ -16,7 +16,8 @@ bool parseBackendFlag(ArgCursor& c, gl::ContextRequest& request) {
         else if (*v == "osmesa")
             request.backend = gl::Backend::OSMesa;
         else
-            c.fail("--backend: expected auto, egl, egl-device, egl-surfaceless or osmesa, got '" + *v + "'");
+            c.fail("--backend: expected auto, egl, egl-device, egl-surfaceless or osmesa, got '" +
+                   *v + "'");
         return true;
     }
     if (auto v = c.option("", "--device")) {

@@ -9,7 +9,8 @@
 namespace penumbra::cli {
 namespace {
 
-constexpr const char* kHelp = R"(usage: penumbra info [--json] [--backend auto|egl|egl-device|egl-surfaceless|osmesa]
+constexpr const char* kHelp =
+    R"(usage: penumbra info [--json] [--backend auto|egl|egl-device|egl-surfaceless|osmesa]
                      [--device N]
 
 Creates an OpenGL context the way `render` would and reports what it found: every backend
@@ -65,12 +66,14 @@ int runInfo(const Args& args) {
     std::printf("chosen: %s (%s)\n", info.api.c_str(), info.device.c_str());
     std::printf("GL: %s | %s | %s | GLSL %s\n", info.vendor.c_str(), info.renderer.c_str(),
                 info.version.c_str(), info.glsl_version.c_str());
-    std::printf("timings: %s\n", info.software ? "glFinish-bracketed CPU clock (software rasteriser)"
-                                               : "GL timer queries");
-    std::printf("limits: texture %d, array layers %d, samples %d, colour attachments %d, "
-                "vertex-shader gl_Layer %s\n",
-                info.max_texture_size, info.max_array_layers, info.max_samples,
-                info.max_color_attachments, info.has_vertex_layer ? "yes" : "no");
+    std::printf("timings: %s\n", info.software
+                                     ? "glFinish-bracketed CPU clock (software rasteriser)"
+                                     : "GL timer queries");
+    std::printf(
+        "limits: texture %d, array layers %d, samples %d, colour attachments %d, "
+        "vertex-shader gl_Layer %s\n",
+        info.max_texture_size, info.max_array_layers, info.max_samples, info.max_color_attachments,
+        info.has_vertex_layer ? "yes" : "no");
     return 0;
 }
 

@@ -38,6 +38,47 @@ exit codes: 0 all frames written, 1 a frame failed at run time, 2 bad command li
 3 no usable OpenGL backend.
 )";
 
+// A non-empty pattern for FLAG.
+std::string pattern(const ArgCursor& c, const char* flag, const std::string& v) {
+    if (v.empty()) c.fail(std::string(flag) + ": empty pattern");
+    return v;
+}
+
+// Consumes one render option at the cursor into REQ; false if the argument is not one.
+bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
+    std::optional<std::string> v;
+    if ((v = c.option("-t", "--technique"))) {
+        req.technique = *v;
+    } else if ((v = c.option("-D", "--set"))) {
+        size_t eq = v->find('=');
+        if (eq == std::string::npos || eq == 0) c.fail("-D: expected KEY=VALUE, got '" + *v + "'");
+        req.overrides.push_back({v->substr(0, eq), v->substr(eq + 1)});
+    } else if ((v = c.option("-o", "--output"))) {
+        req.output = pattern(c, "--output", *v);
+    } else if ((v = c.option("", "--timings"))) {
+        req.timings = pattern(c, "--timings", *v);
+    } else if ((v = c.option("", "--preview"))) {
+        req.preview = pattern(c, "--preview", *v);
+    } else if ((v = c.option("-f", "--frames"))) {
+        req.frames = *v;
+    } else if ((v = c.option("", "--size"))) {
+        auto [w, h] = parseSize(c, "--size", *v);
+        req.overrides.push_back({"image.width", std::to_string(w)});
+        req.overrides.push_back({"image.height", std::to_string(h)});
+    } else if ((v = c.option("", "--warmup"))) {
+        req.warmup = parseInt(c, "--warmup", *v, 0, 1000);
+    } else if ((v = c.option("", "--repeat"))) {
+        req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
+    } else if (c.flag("", "--skip-existing")) {
+        req.skip_existing = true;
+    } else if (c.flag("-q", "--quiet")) {
+        req.quiet = true;
+    } else {
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 int runRender(const Args& args) {
@@ -49,43 +90,13 @@ int runRender(const Args& args) {
             std::fputs(kHelp, stdout);
             return 0;
         }
-        if (auto v = c.option("-t", "--technique")) {
-            req.technique = *v;
-        } else if (auto v = c.option("-D", "--set")) {
-            size_t eq = v->find('=');
-            if (eq == std::string::npos || eq == 0)
-                c.fail("-D: expected KEY=VALUE, got '" + *v + "'");
-            req.overrides.push_back({v->substr(0, eq), v->substr(eq + 1)});
-        } else if (auto v = c.option("-o", "--output")) {
-            if (v->empty()) c.fail("--output: empty pattern");
-            req.output = *v;
-        } else if (auto v = c.option("", "--timings")) {
-            if (v->empty()) c.fail("--timings: empty pattern");
-            req.timings = *v;
-        } else if (auto v = c.option("", "--preview")) {
-            if (v->empty()) c.fail("--preview: empty pattern");
-            req.preview = *v;
-        } else if (auto v = c.option("-f", "--frames")) {
-            req.frames = *v;
-        } else if (auto v = c.option("", "--size")) {
-            auto [w, h] = parseSize(c, "--size", *v);
-            req.overrides.push_back({"image.width", std::to_string(w)});
-            req.overrides.push_back({"image.height", std::to_string(h)});
-        } else if (auto v = c.option("", "--warmup")) {
-            req.warmup = parseInt(c, "--warmup", *v, 0, 1000);
-        } else if (auto v = c.option("", "--repeat")) {
-            req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
-        } else if (c.flag("", "--skip-existing")) {
-            req.skip_existing = true;
-        } else if (c.flag("-q", "--quiet")) {
-            req.quiet = true;
-        } else if (parseBackendFlag(c, req.gl)) {
-        } else if (auto p = c.positional()) {
+        if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl)) continue;
+        if (auto p = c.positional()) {
             if (scene) c.fail("unexpected argument '" + *p + "': one scene per render");
             scene = *p;
-        } else {
-            c.unknown();
+            continue;
         }
+        c.unknown();
     }
     if (!scene) c.fail("missing SCENE.json (see --help)");
     req.scene = *scene;

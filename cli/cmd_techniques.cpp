@@ -79,9 +79,8 @@ int runTechniques(const Args& args) {
         std::printf("%s: %s\n", std::string(t->name).c_str(), std::string(t->summary).c_str());
         for (const auto& s : t->params)
             std::printf("  %-16s %-6s default %-8s %-22s %s\n", std::string(s.key).c_str(),
-                        std::string(paramTypeName(s.type)).c_str(),
-                        paramDefault(s).dump().c_str(), rangeText(s).c_str(),
-                        std::string(s.doc).c_str());
+                        std::string(paramTypeName(s.type)).c_str(), paramDefault(s).dump().c_str(),
+                        rangeText(s).c_str(), std::string(s.doc).c_str());
         std::printf("\n");
     }
     return 0;

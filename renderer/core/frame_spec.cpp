@@ -10,7 +10,7 @@
 namespace penumbra {
 namespace {
 
-constexpr long kMaxFrame = 10'000'000;   // frame numbers beyond this are surely typos
+constexpr long kMaxFrame = 10'000'000;    // frame numbers beyond this are surely typos
 constexpr size_t kMaxFrames = 1'000'000;  // a list longer than this is refused before allocation
 
 std::string_view trim(std::string_view s) {
@@ -75,8 +75,8 @@ std::vector<int> parseFrameSpec(std::string_view spec, std::string_view where) {
         for (long f = first; f <= last; f += step) {
             frames.insert(static_cast<int>(f));
             if (frames.size() > kMaxFrames)
-                throw InputError(std::string(where) + ": more than " +
-                                 std::to_string(kMaxFrames) + " frames");
+                throw InputError(std::string(where) + ": more than " + std::to_string(kMaxFrames) +
+                                 " frames");
         }
         start = comma + 1;
     }

@@ -42,20 +42,28 @@ std::string number(double v) {
 
 std::string_view paramTypeName(ParamType type) {
     switch (type) {
-        case ParamType::Int: return "int";
-        case ParamType::Float: return "float";
-        case ParamType::Bool: return "bool";
-        case ParamType::Enum: return "enum";
+        case ParamType::Int:
+            return "int";
+        case ParamType::Float:
+            return "float";
+        case ParamType::Bool:
+            return "bool";
+        case ParamType::Enum:
+            return "enum";
     }
     return "?";
 }
 
 nlohmann::json paramDefault(const ParamSpec& s) {
     switch (s.type) {
-        case ParamType::Int: return static_cast<long long>(s.def);
-        case ParamType::Float: return s.def;
-        case ParamType::Bool: return s.def != 0;
-        case ParamType::Enum: return std::string(s.enum_def);
+        case ParamType::Int:
+            return static_cast<long long>(s.def);
+        case ParamType::Float:
+            return s.def;
+        case ParamType::Bool:
+            return s.def != 0;
+        case ParamType::Enum:
+            return std::string(s.enum_def);
     }
     return nullptr;
 }
@@ -65,7 +73,8 @@ nlohmann::json paramSpecJson(const ParamSpec& s) {
                         {"type", paramTypeName(s.type)},
                         {"default", paramDefault(s)},
                         {"doc", s.doc}};
-    if (s.type == ParamType::Int) j["range"] = {static_cast<long long>(s.min), static_cast<long long>(s.max)};
+    if (s.type == ParamType::Int)
+        j["range"] = {static_cast<long long>(s.min), static_cast<long long>(s.max)};
     if (s.type == ParamType::Float) j["range"] = {s.min, s.max};
     if (s.type == ParamType::Enum) {
         j["choices"] = nlohmann::json::array();
@@ -87,10 +96,18 @@ const nlohmann::json& Params::at(std::string_view key) const {
     return *it;
 }
 
-int Params::getInt(std::string_view key) const { return at(key).get<int>(); }
-double Params::getFloat(std::string_view key) const { return at(key).get<double>(); }
-bool Params::getBool(std::string_view key) const { return at(key).get<bool>(); }
-std::string Params::getString(std::string_view key) const { return at(key).get<std::string>(); }
+int Params::getInt(std::string_view key) const {
+    return at(key).get<int>();
+}
+double Params::getFloat(std::string_view key) const {
+    return at(key).get<double>();
+}
+bool Params::getBool(std::string_view key) const {
+    return at(key).get<bool>();
+}
+std::string Params::getString(std::string_view key) const {
+    return at(key).get<std::string>();
+}
 
 Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& block,
                      std::string_view where) {
@@ -102,10 +119,11 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
         for (const auto& s : specs) known = known || s.key == key;
         if (!known) {
             std::string allowed;
-            for (const auto& s : specs) allowed += (allowed.empty() ? "" : ", ") + std::string(s.key);
+            for (const auto& s : specs)
+                allowed += (allowed.empty() ? "" : ", ") + std::string(s.key);
             throw InputError(prefix + key + ": unknown parameter for technique '" +
-                             block.value("name", std::string("?")) + "' (known: " +
-                             (allowed.empty() ? "none" : allowed) + ")");
+                             block.value("name", std::string("?")) +
+                             "' (known: " + (allowed.empty() ? "none" : allowed) + ")");
         }
     }
     nlohmann::json out = nlohmann::json::object();
@@ -139,7 +157,8 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
                 break;
             }
             case ParamType::Bool:
-                if (!v.is_boolean()) throw InputError(at + "expected true or false, got " + v.dump());
+                if (!v.is_boolean())
+                    throw InputError(at + "expected true or false, got " + v.dump());
                 out[key] = v.get<bool>();
                 break;
             case ParamType::Enum:

@@ -33,8 +33,8 @@ constexpr ParamSpec floatParam(std::string_view key, double def, double min, dou
 constexpr ParamSpec boolParam(std::string_view key, bool def, std::string_view doc) {
     return {key, ParamType::Bool, def ? 1.0 : 0.0, 0, 1, {}, {}, doc};
 }
-constexpr ParamSpec enumParam(std::string_view key, std::string_view def,
-                              std::string_view choices, std::string_view doc) {
+constexpr ParamSpec enumParam(std::string_view key, std::string_view def, std::string_view choices,
+                              std::string_view doc) {
     return {key, ParamType::Enum, 0, 0, 0, choices, def, doc};
 }
 

@@ -83,7 +83,8 @@ std::unique_ptr<Context> Context::create(const ContextRequest& request) {
             std::string list;
             for (const auto& d : devices)
                 list += (list.empty() ? "" : ", ") + std::to_string(d.index) + ": " + d.name;
-            throw InputError("--device " + std::to_string(*request.device) + ": no such EGL device (" +
+            throw InputError("--device " + std::to_string(*request.device) +
+                             ": no such EGL device (" +
                              (list.empty() ? std::string("none found") : list) + ")");
         }
         if (request.backend == Backend::OSMesa || request.backend == Backend::EglSurfaceless)

@@ -34,8 +34,8 @@ struct EglDeviceInfo {
 };
 
 struct ContextInfo {
-    std::string api;       // "egl-device", "egl-surfaceless", "osmesa"
-    std::string device;    // device description
+    std::string api;     // "egl-device", "egl-surfaceless", "osmesa"
+    std::string device;  // device description
     std::string vendor, renderer, version, glsl_version;
     int major = 0, minor = 0;
     bool software = false;  // a software rasteriser (llvmpipe, softpipe, ...): timer queries lie

@@ -205,8 +205,8 @@ std::unique_ptr<Context> createEglDeviceContext(std::optional<int> device, bool 
             ctx->setInfo("egl-device", "EGL device " + std::to_string(i) + ": " + d.name);
             return ctx;
         }
-        reasons += (reasons.empty() ? "" : "; ") + ("device " + std::to_string(i) + " (" +
-                                                    d.name + "): " + r);
+        reasons += (reasons.empty() ? "" : "; ") +
+                   ("device " + std::to_string(i) + " (" + d.name + "): " + r);
     }
     why = reasons;
     return nullptr;

@@ -75,8 +75,7 @@ std::unique_ptr<Context> createOSMesaContext(bool /*debug*/, std::string& why) {
         why = "libOSMesa not found (Debian package libosmesa6)";
         return nullptr;
     }
-    auto create =
-        reinterpret_cast<CreateContextAttribs>(dlsym(lib, "OSMesaCreateContextAttribs"));
+    auto create = reinterpret_cast<CreateContextAttribs>(dlsym(lib, "OSMesaCreateContextAttribs"));
     auto makeCurrent = reinterpret_cast<MakeCurrent>(dlsym(lib, "OSMesaMakeCurrent"));
     auto destroy = reinterpret_cast<DestroyContext>(dlsym(lib, "OSMesaDestroyContext"));
     auto getProc = reinterpret_cast<GetProcAddress>(dlsym(lib, "OSMesaGetProcAddress"));
@@ -87,9 +86,17 @@ std::unique_ptr<Context> createOSMesaContext(bool /*debug*/, std::string& why) {
     OSMesaContextHandle handle = nullptr;
     const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}};
     for (const auto& v : versions) {
-        const int attribs[] = {kOSMesaFormat, kOSMesaRgba,        kOSMesaDepthBits, 0,
-                               kOSMesaProfile, kOSMesaCoreProfile, kOSMesaMajor,     v[0],
-                               kOSMesaMinor,  v[1],               0};
+        const int attribs[] = {kOSMesaFormat,
+                               kOSMesaRgba,
+                               kOSMesaDepthBits,
+                               0,
+                               kOSMesaProfile,
+                               kOSMesaCoreProfile,
+                               kOSMesaMajor,
+                               v[0],
+                               kOSMesaMinor,
+                               v[1],
+                               0};
         handle = create(attribs, nullptr);
         if (handle) break;
     }

@@ -22,8 +22,8 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
     (void)id;
     std::string text(message, length > 0 ? static_cast<size_t>(length) : std::strlen(message));
     if (g_verbose)
-        std::fprintf(stderr, "penumbra: gl-debug: [type 0x%x severity 0x%x] %s\n", type,
-                     severity, text.c_str());
+        std::fprintf(stderr, "penumbra: gl-debug: [type 0x%x severity 0x%x] %s\n", type, severity,
+                     text.c_str());
     if (type == GL_DEBUG_TYPE_ERROR) {
         std::lock_guard<std::mutex> lock(g_mutex);
         if (g_firstError.empty()) g_firstError = text;
@@ -68,6 +68,8 @@ DebugGroup::DebugGroup(std::string_view name) {
                      name.data());
 }
 
-DebugGroup::~DebugGroup() { glPopDebugGroup(); }
+DebugGroup::~DebugGroup() {
+    glPopDebugGroup();
+}
 
 }  // namespace penumbra::gl

@@ -102,10 +102,10 @@ Program buildProgram(std::string_view label, std::initializer_list<std::string_v
     return program;
 }
 
-#define PENUMBRA_UNIFORM(T, CALL)                                       \
-    void setUniform(const Program& p, const char* name, T v) {          \
-        GLint loc = glGetUniformLocation(p.id(), name);                 \
-        if (loc >= 0) CALL;                                             \
+#define PENUMBRA_UNIFORM(T, CALL)                              \
+    void setUniform(const Program& p, const char* name, T v) { \
+        GLint loc = glGetUniformLocation(p.id(), name);        \
+        if (loc >= 0) CALL;                                    \
     }
 PENUMBRA_UNIFORM(int, glProgramUniform1i(p.id(), loc, v))
 PENUMBRA_UNIFORM(float, glProgramUniform1f(p.id(), loc, v))

@@ -29,8 +29,8 @@ struct Image {
         return nullptr;
     }
     ImageChannel& add(std::string name, PixelType type) {
-        channels.push_back({std::move(name), type,
-                            std::vector<float>(static_cast<size_t>(width) * height, 0.0f)});
+        channels.push_back(
+            {std::move(name), type, std::vector<float>(static_cast<size_t>(width) * height, 0.0f)});
         return channels.back();
     }
 };

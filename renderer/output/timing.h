@@ -11,8 +11,8 @@
 namespace penumbra::output {
 
 struct PassTiming {
-    std::string name;   // e.g. "gbuffer", "shadow_map[3]", "shade"
-    std::string clock;  // "gl_timer_query" or "cpu_glfinish"
+    std::string name;        // e.g. "gbuffer", "shadow_map[3]", "shade"
+    std::string clock;       // "gl_timer_query" or "cpu_glfinish"
     std::vector<double> ms;  // one figure per measured repeat
 };
 
@@ -24,9 +24,9 @@ struct FrameReport {
     nlohmann::json backend;  // {"api", "device", "renderer", "version", "vendor"}
     int width = 0, height = 0;
     int warmup = 0;
-    std::vector<PassTiming> passes;  // in first-run order
-    std::vector<double> frame_ms;    // whole frame, per repeat
-    nlohmann::json stats = nlohmann::json::object();  // technique statistics
+    std::vector<PassTiming> passes;                    // in first-run order
+    std::vector<double> frame_ms;                      // whole frame, per repeat
+    nlohmann::json stats = nlohmann::json::object();   // technique statistics
     nlohmann::json output = nlohmann::json::object();  // paths written
 };
 

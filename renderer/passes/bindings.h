@@ -2,8 +2,8 @@
 #pragma once
 
 namespace penumbra::passes {
-constexpr unsigned kBindingSampleViews = 0;  // SSBO of SampleView (shadow_maps)
-constexpr unsigned kBindingLights = 1;       // SSBO of GpuLight (shade)
+constexpr unsigned kBindingSampleViews = 0;    // SSBO of SampleView (shadow_maps)
+constexpr unsigned kBindingLights = 1;         // SSBO of GpuLight (shade)
 constexpr unsigned kBindingSampleLookups = 2;  // UBO of SampleLookup (shadow tests)
-constexpr int kMaxSampleLookups = 1024;         // views per light: N = 32 squared
+constexpr int kMaxSampleLookups = 1024;        // views per light: N = 32 squared
 }  // namespace penumbra::passes

@@ -11,9 +11,9 @@ CameraMatrices cameraMatrices(const scene::Camera& c, int width, int height) {
     CameraMatrices m;
     m.position = c.position;
     m.view = glm::lookAt(c.position, c.target, c.up);
-    m.projection = glm::perspective(glm::radians(c.fov_y),
-                                    static_cast<float>(width) / static_cast<float>(height), c.near,
-                                    c.far);
+    m.projection =
+        glm::perspective(glm::radians(c.fov_y),
+                         static_cast<float>(width) / static_cast<float>(height), c.near, c.far);
     return m;
 }
 

@@ -20,7 +20,8 @@ namespace {
 template <typename T>
 gl::Buffer uploadBuffer(const std::vector<T>& data, std::string_view label) {
     gl::Buffer b = gl::createBuffer(label);
-    glNamedBufferStorage(b.id(), static_cast<GLsizeiptr>(std::max<size_t>(data.size(), 1) * sizeof(T)),
+    glNamedBufferStorage(b.id(),
+                         static_cast<GLsizeiptr>(std::max<size_t>(data.size(), 1) * sizeof(T)),
                          data.empty() ? nullptr : data.data(), 0);
     return b;
 }
@@ -81,7 +82,8 @@ std::unique_ptr<GpuModel> uploadModel(const scene::Model& m) {
     }
     glVertexArrayElementBuffer(vao, g->indices.id());
     for (size_t i = 0; i < m.textures.size(); ++i)
-        g->textures.push_back(uploadTexture(m.textures[i], label + " texture " + std::to_string(i)));
+        g->textures.push_back(
+            uploadTexture(m.textures[i], label + " texture " + std::to_string(i)));
     for (const auto& mat : m.materials) {
         g->base_colors.push_back(mat.base_color);
         g->material_texture.push_back(mat.texture);

@@ -28,8 +28,8 @@ struct Bounds {
 };
 
 struct GpuDraw {
-    GLsizei count = 0;      // indices
-    GLintptr first = 0;     // byte offset into the index buffer
+    GLsizei count = 0;   // indices
+    GLintptr first = 0;  // byte offset into the index buffer
     GLint base_vertex = 0;
     int material = 0;
     bool has_uvs = false;  // a texture is only sampled where the mesh has coordinates
@@ -39,8 +39,8 @@ struct GpuModel {
     gl::VertexArray vao;
     gl::Buffer positions, normals, uvs, indices;
     std::vector<GpuDraw> draws;
-    std::vector<glm::vec4> base_colors;   // per material
-    std::vector<int> material_texture;    // per material: index into textures or -1
+    std::vector<glm::vec4> base_colors;  // per material
+    std::vector<int> material_texture;   // per material: index into textures or -1
     std::vector<gl::Texture> textures;
     Bounds bounds;  // model space
     size_t triangles = 0;

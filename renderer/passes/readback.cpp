@@ -25,9 +25,10 @@ std::vector<float> readTexture(const gl::Texture& texture, int width, int height
                              GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)), data.data());
     }
     for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y)),
-                         data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y + 1)),
-                         data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(height - 1 - y)));
+        std::swap_ranges(
+            data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y)),
+            data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y + 1)),
+            data.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(height - 1 - y)));
     return data;
 }
 

@@ -40,17 +40,7 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
         g.radiance = glm::vec4(r, 0.2126f * r.x + 0.7152f * r.y + 0.0722f * r.z);
         data.push_back(g);
     }
-    size_t bytes = std::max<size_t>(data.size(), 1) * sizeof(GpuLight);
-    if (!lights_ || bytes > lights_capacity_) {
-        lights_ = gl::createBuffer("lights");
-        glNamedBufferStorage(lights_.id(), static_cast<GLsizeiptr>(bytes), nullptr,
-                             GL_DYNAMIC_STORAGE_BIT);
-        lights_capacity_ = bytes;
-    }
-    if (!data.empty())
-        glNamedBufferSubData(lights_.id(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(GpuLight)),
-                             data.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingLights, lights_.id());
+    lights_.upload(std::span<const GpuLight>(data), GL_SHADER_STORAGE_BUFFER, kBindingLights);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
@@ -25,8 +26,7 @@ private:
     gl::Texture beauty_, visibility_;
     gl::Framebuffer fbo_;
     gl::Program program_;
-    gl::Buffer lights_;
-    size_t lights_capacity_ = 0;
+    gl::DynamicBuffer lights_{"lights"};
     Fullscreen fullscreen_;
 };
 

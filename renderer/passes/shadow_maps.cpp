@@ -156,38 +156,19 @@ void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batc
 }
 
 void SampleViewBuffer::upload(std::span<const SampleView> views) {
-    size_t bytes = std::max<size_t>(views.size(), 1) * sizeof(SampleView);
-    if (!buffer_ || bytes > capacity_) {
-        buffer_ = gl::createBuffer("sample views");
-        glNamedBufferStorage(buffer_.id(), static_cast<GLsizeiptr>(bytes), nullptr,
-                             GL_DYNAMIC_STORAGE_BIT);
-        capacity_ = bytes;
-    }
-    if (!views.empty())
-        glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(views.size_bytes()),
-                             views.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSampleViews, buffer_.id());
-
     if (views.size() > static_cast<size_t>(kMaxSampleLookups))
         throw RuntimeError("sample views: " + std::to_string(views.size()) + " views, at most " +
                            std::to_string(kMaxSampleLookups) + " per light");
-    const size_t lookup_bytes = 3 * sizeof(glm::vec4) * static_cast<size_t>(kMaxSampleLookups);
-    if (!lookups_) {
-        lookups_ = gl::createBuffer("sample lookups");
-        glNamedBufferStorage(lookups_.id(), static_cast<GLsizeiptr>(lookup_bytes), nullptr,
-                             GL_DYNAMIC_STORAGE_BIT);
-    }
+    views_.upload(views, GL_SHADER_STORAGE_BUFFER, kBindingSampleViews);
     staging_.clear();
     for (const auto& v : views) {
         staging_.push_back(v.light_origin);
         staging_.push_back(v.frustum);
         staging_.push_back(v.depth);
     }
-    if (!staging_.empty())
-        glNamedBufferSubData(lookups_.id(), 0,
-                             static_cast<GLsizeiptr>(staging_.size() * sizeof(glm::vec4)),
-                             staging_.data());
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingSampleLookups, lookups_.id());
+    // The uniform block is declared at its full size, so the buffer always has that size.
+    lookups_.upload(std::span<const glm::vec4>(staging_), GL_UNIFORM_BUFFER, kBindingSampleLookups,
+                    3 * sizeof(glm::vec4) * static_cast<size_t>(kMaxSampleLookups));
 }
 
 }  // namespace penumbra::passes

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
@@ -19,9 +20,9 @@ namespace penumbra::passes {
 // std430 mirror of glsl/common/sample_view.glsl.
 struct SampleView {
     glm::mat4 view_proj{1.0f};
-    glm::vec4 origin{0.0f};   // xyz point, w weight
-    glm::vec4 forward{0.0f};  // xyz direction, w near
-    glm::vec4 params{0.0f};   // x far, y texel world size per unit distance
+    glm::vec4 origin{0.0f};        // xyz point, w weight
+    glm::vec4 forward{0.0f};       // xyz direction, w near
+    glm::vec4 params{0.0f};        // x far, y texel world size per unit distance
     glm::vec4 light_origin{0.0f};  // (o.r, o.u, o.f, near) in the light's frame
     glm::vec4 frustum{0.0f};       // (left, bottom, 1/width, 1/height) at distance 1
     glm::vec4 depth{0.0f};         // (1/(far - near), weight, 0, 0)
@@ -53,9 +54,9 @@ private:
 };
 
 struct ShadowTestSettings {
-    int pcf = 1;                  // kernel width in texels
-    float normal_offset = 1.5f;   // texels
-    float depth_bias = 0.0005f;   // linear depth units
+    int pcf = 1;                 // kernel width in texels
+    float normal_offset = 1.5f;  // texels
+    float depth_bias = 0.0005f;  // linear depth units
 };
 
 // Adds sum_k weight_k * lit_k over a batch into the bound framebuffer's colour 0 (the caller
@@ -79,8 +80,8 @@ public:
     void upload(std::span<const SampleView> views);
 
 private:
-    gl::Buffer buffer_, lookups_;
-    size_t capacity_ = 0;
+    gl::DynamicBuffer views_{"sample views"};
+    gl::DynamicBuffer lookups_{"sample lookups"};
     std::vector<glm::vec4> staging_;
 };
 

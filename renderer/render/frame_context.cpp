@@ -13,8 +13,7 @@ OutputTargets::OutputTargets(int width, int height, int lights, int diagnostics)
                                            "visibility per light")),
       fbo_(gl::createFramebuffer("technique output")) {
     for (int i = 0; i < diagnostics; ++i)
-        diagnostics_.push_back(gl::createTexture2DArray(GL_R32F, width, height,
-                                                        std::max(lights, 1),
+        diagnostics_.push_back(gl::createTexture2DArray(GL_R32F, width, height, std::max(lights, 1),
                                                         "diagnostic " + std::to_string(i)));
     std::vector<GLenum> bufs;
     for (int i = 0; i <= diagnostics; ++i) bufs.push_back(GL_COLOR_ATTACHMENT0 + i);

@@ -40,15 +40,16 @@ public:
     FrameContext(const scene::Scene& s, const passes::GpuScene& g, const passes::GBuffer& gb,
                  const passes::CameraMatrices& cam, OutputTargets& targets, PassTimer& timer,
                  nlohmann::json& st)
-        : scene(s), gpu(g), gbuffer(gb), camera(cam), targets_(targets), timer_(timer),
-          stats(st) {}
+        : scene(s), gpu(g), gbuffer(gb), camera(cam), targets_(targets), timer_(timer), stats(st) {}
 
     const scene::Scene& scene;
     const passes::GpuScene& gpu;
     const passes::GBuffer& gbuffer;
     const passes::CameraMatrices& camera;
     int light = 0;  // index into scene.lights being rendered
-    const scene::RectLight& currentLight() const { return scene.lights[static_cast<size_t>(light)]; }
+    const scene::RectLight& currentLight() const {
+        return scene.lights[static_cast<size_t>(light)];
+    }
 
     // Runs FN as one named, timed pass. With several lights, the name gets "@<light>".
     void pass(const std::string& name, const std::function<void()>& fn);

@@ -48,8 +48,8 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
 }
 
 output::Image FrameRenderer::readImage() const {
-    output::Image image = readFrameImage(gbuffer_, shade_, *targets_, lights_,
-                                         std::string(info_.name), diagnostics_);
+    output::Image image =
+        readFrameImage(gbuffer_, shade_, *targets_, lights_, std::string(info_.name), diagnostics_);
     gl::checkErrors("readback");
     return image;
 }

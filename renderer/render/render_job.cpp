@@ -58,9 +58,9 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const scene::SceneSo
         p.timing = req.timings ? expandFramePattern(*req.timings, f, several)
                                : replaceExtension(p.exr, ".json");
         if (req.preview) p.preview = expandFramePattern(*req.preview, f, several);
-        for (const auto& [path, flag] : {std::pair{p.exr, "--output"},
-                                         std::pair{p.timing, "--timings"},
-                                         std::pair{p.preview, "--preview"}}) {
+        for (const auto& [path, flag] :
+             {std::pair{p.exr, "--output"}, std::pair{p.timing, "--timings"},
+              std::pair{p.preview, "--preview"}}) {
             if (path.empty()) continue;
             auto [it, inserted] = seen.emplace(path, f);
             if (!inserted)
@@ -85,10 +85,9 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
         throw InputError(where + "image.height: " + std::to_string(s.image.height) +
                          " exceeds this GL's limit of " + std::to_string(max));
     if (params.json().contains("map_size") && params.getInt("map_size") > info.max_texture_size)
-        throw InputError(where + "technique.map_size: " +
-                         std::to_string(params.getInt("map_size")) +
-                         " exceeds this GL's texture limit of " +
-                         std::to_string(info.max_texture_size));
+        throw InputError(
+            where + "technique.map_size: " + std::to_string(params.getInt("map_size")) +
+            " exceeds this GL's texture limit of " + std::to_string(info.max_texture_size));
     if (s.lights.size() > static_cast<size_t>(info.max_array_layers))
         throw InputError(where + "lights: more lights than this GL's array layers allow");
 }
@@ -142,7 +141,8 @@ int runRenderJob(const RenderRequest& req) {
     if (req.frames)
         frames = parseFrameSpec(*req.frames, "--frames");
     else if (source.animationFrames())
-        frames = parseFrameSpec(*source.animationFrames(), req.scene.string() + ": animation.frames");
+        frames =
+            parseFrameSpec(*source.animationFrames(), req.scene.string() + ": animation.frames");
     else
         frames = {0};
     scene::Scene first = source.at(frames.front());
@@ -163,8 +163,8 @@ int runRenderJob(const RenderRequest& req) {
     FrameRenderer renderer(glinfo, first, info, params);
     PassTimer timer(glinfo.software);
 
-    const nlohmann::json backend = {{"api", glinfo.api},       {"device", glinfo.device},
-                                    {"vendor", glinfo.vendor}, {"renderer", glinfo.renderer},
+    const nlohmann::json backend = {{"api", glinfo.api},         {"device", glinfo.device},
+                                    {"vendor", glinfo.vendor},   {"renderer", glinfo.renderer},
                                     {"version", glinfo.version}, {"clock", timer.clockName()}};
     const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
     Progress progress(progress_on, plans.size());
@@ -201,7 +201,8 @@ int runRenderJob(const RenderRequest& req) {
             auto read_start = Clock::now();
             output::Image image = renderer.readImage();
             report.passes.push_back(
-                {"readback", "cpu",
+                {"readback",
+                 "cpu",
                  {std::chrono::duration<double, std::milli>(Clock::now() - read_start).count()}});
             image.attributes = {{"penumbra/version", PENUMBRA_VERSION},
                                 {"penumbra/commit", PENUMBRA_COMMIT},
@@ -231,7 +232,8 @@ int runRenderJob(const RenderRequest& req) {
             output::writeTimingJson(plan.timing, report);
             ++written;
             if (!req.quiet && !progress_on) {
-                std::fprintf(stderr, "penumbra: frame %d: wrote %s\n", plan.frame, plan.exr.c_str());
+                std::fprintf(stderr, "penumbra: frame %d: wrote %s\n", plan.frame,
+                             plan.exr.c_str());
             }
         } catch (const RuntimeError& e) {
             progress.done();

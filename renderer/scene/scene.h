@@ -17,7 +17,9 @@ namespace penumbra::scene {
 
 // Which side of shadowing an object takes part in (PRODUCT.md "shadow").
 enum class ShadowRole { Both, Occluder, Receiver, None };
-inline bool castsShadow(ShadowRole r) { return r == ShadowRole::Both || r == ShadowRole::Occluder; }
+inline bool castsShadow(ShadowRole r) {
+    return r == ShadowRole::Both || r == ShadowRole::Occluder;
+}
 inline bool receivesShadow(ShadowRole r) {
     return r == ShadowRole::Both || r == ShadowRole::Receiver;
 }

@@ -28,7 +28,8 @@ class SceneSource {
 public:
     // Reads and validates FILE with OVERRIDES applied (including every animation key frame),
     // loads every glTF and the environment image once. Throws InputError.
-    static SceneSource load(const std::filesystem::path& file, const std::vector<Override>& overrides,
+    static SceneSource load(const std::filesystem::path& file,
+                            const std::vector<Override>& overrides,
                             const LoadOptions& options = {});
 
     // The scene at FRAME: animation tracks interpolated linearly between keys, held outside.

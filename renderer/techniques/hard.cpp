@@ -8,12 +8,10 @@ namespace penumbra::techniques {
 namespace {
 
 constexpr std::array kHardParams = {
-    intParam("map_size", 2048, 16, 16384, "shadow map width and height in texels"),
+    mapSizeParam(2048),
     intParam("pcf", 1, 1, 15, "PCF kernel width in texels (1 = a single hard test)"),
-    floatParam("normal_offset", 1.5, 0.0, 16.0,
-               "receiver offset along its normal, in shadow-map texels (against acne)"),
-    floatParam("depth_bias", 0.0005, 0.0, 0.1,
-               "constant bias subtracted from receiver depth, in units of the caster depth range"),
+    kNormalOffsetParam,
+    kDepthBiasParam,
 };
 
 class Hard final : public Technique {
@@ -40,8 +38,7 @@ private:
 
 const TechniqueInfo kHardTechnique = {
     "hard", "one shadow map from the light's centre (optional PCF): the hard-shadow baseline",
-    kHardParams, [](const Params& p) -> std::unique_ptr<Technique> {
-        return std::make_unique<Hard>(p);
-    }};
+    kHardParams,
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Hard>(p); }};
 
 }  // namespace penumbra::techniques

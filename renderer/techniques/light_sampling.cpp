@@ -26,10 +26,10 @@ int LightSampler::render(render::FrameContext& ctx, std::span<const LightSample>
     const auto corners = light.corners();
     views_.clear();
     for (const auto& s : samples) {
-        glm::vec3 p = corners[0] + (corners[1] - corners[0]) * s.uv.x +
-                      (corners[3] - corners[0]) * s.uv.y;
-        views_.push_back(passes::makeSampleView(light, p, ctx.gpu.casterBounds(), s.weight,
-                                                settings_.map_size));
+        glm::vec3 p =
+            corners[0] + (corners[1] - corners[0]) * s.uv.x + (corners[3] - corners[0]) * s.uv.y;
+        views_.push_back(
+            passes::makeSampleView(light, p, ctx.gpu.casterBounds(), s.weight, settings_.map_size));
     }
     views_buffer_.upload(views_);
     ctx.bindOutput();

@@ -43,7 +43,18 @@ private:
     std::vector<passes::SampleView> views_;
 };
 
-// The common parameter rows (map size, bias) with their defaults; see hard.cpp/reference.cpp.
+// The parameter rows every shadow-map-sampling technique shares (hard, reference).
+constexpr ParamSpec mapSizeParam(int def) {
+    return intParam("map_size", def, 16, 16384, "shadow map width and height in texels");
+}
+constexpr ParamSpec kNormalOffsetParam =
+    floatParam("normal_offset", 1.5, 0.0, 16.0,
+               "receiver offset along its normal, in shadow-map texels (against acne)");
+constexpr ParamSpec kDepthBiasParam =
+    floatParam("depth_bias", 0.0005, 0.0, 0.1,
+               "constant bias subtracted from receiver depth, in units of the caster depth range");
+
+// Settings from the shared rows above.
 SamplingSettings samplingSettings(const Params& params);
 
 }  // namespace penumbra::techniques

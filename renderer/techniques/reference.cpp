@@ -14,12 +14,10 @@ constexpr std::array kReferenceParams = {
     intParam("samples", 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
     boolParam("jitter", true, "jitter each sample inside its stratum (false: stratum centres)"),
     intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
-    intParam("map_size", 1024, 16, 16384, "shadow map width and height in texels"),
+    mapSizeParam(1024),
     intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
-    floatParam("normal_offset", 1.5, 0.0, 16.0,
-               "receiver offset along its normal, in shadow-map texels (against acne)"),
-    floatParam("depth_bias", 0.0005, 0.0, 0.1,
-               "constant bias subtracted from receiver depth, in units of the caster depth range"),
+    kNormalOffsetParam,
+    kDepthBiasParam,
 };
 
 // A small integer hash (splitmix-style) for deterministic jitter.
@@ -43,8 +41,10 @@ public:
         const float w = 1.0f / static_cast<float>(n_ * n_);
         for (int j = 0; j < n_; ++j)
             for (int i = 0; i < n_; ++i) {
-                float jx = jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j)) : 0.5f;
-                float jy = jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j + 1)) : 0.5f;
+                float jx =
+                    jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j)) : 0.5f;
+                float jy =
+                    jitter_ ? hashToUnit(seed_, std::uint32_t(i), std::uint32_t(2 * j + 1)) : 0.5f;
                 samples_.push_back({{(float(i) + jx) / float(n_), (float(j) + jy) / float(n_)}, w});
             }
     }
@@ -70,8 +70,7 @@ private:
 const TechniqueInfo kReferenceTechnique = {
     "reference",
     "N x N stratified jittered light samples, one shadow map each, averaged: the ground truth",
-    kReferenceParams, [](const Params& p) -> std::unique_ptr<Technique> {
-        return std::make_unique<Reference>(p);
-    }};
+    kReferenceParams,
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); }};
 
 }  // namespace penumbra::techniques

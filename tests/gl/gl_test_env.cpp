@@ -26,8 +26,8 @@ const gl::ContextInfo& glInfo() {
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
                           int frame) {
     const gl::ContextInfo& info = glInfo();
-    auto source = scene::SceneSource::load(std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name,
-                                           overrides);
+    auto source = scene::SceneSource::load(
+        std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
     scene::Scene s = source.at(frame);
     const auto* technique = techniques::findTechnique(s.technique.value("name", "hard"));
     if (!technique) throw std::runtime_error("unknown technique in " + name);

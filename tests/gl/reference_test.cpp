@@ -48,8 +48,10 @@ TEST(ReferenceGL, MatchesClosedFormSquareOccluder) {
 }
 
 TEST(ReferenceGL, ErrorFallsWithSampleCount) {
-    double coarse = closedFormShadowMae(renderScene("closed_form.json", {{"technique.samples", "3"}}));
-    double fine = closedFormShadowMae(renderScene("closed_form.json", {{"technique.samples", "12"}}));
+    double coarse =
+        closedFormShadowMae(renderScene("closed_form.json", {{"technique.samples", "3"}}));
+    double fine =
+        closedFormShadowMae(renderScene("closed_form.json", {{"technique.samples", "12"}}));
     EXPECT_LT(fine, coarse);
 }
 
@@ -66,7 +68,8 @@ TEST(ReferenceGL, BatchSizeDoesNotChangeTheImage) {
 }
 
 TEST(HardGL, EqualsReferenceWithOneCentredSample) {
-    auto hard = renderScene("closed_form.json", {{"technique", R"({"name": "hard", "map_size": 1024})"}});
+    auto hard =
+        renderScene("closed_form.json", {{"technique", R"({"name": "hard", "map_size": 1024})"}});
     auto ref = renderScene("closed_form.json",
                            {{"technique.samples", "1"}, {"technique.jitter", "false"}});
     const auto& vh = channel(hard, "visibility");
@@ -78,7 +81,8 @@ TEST(HardGL, EqualsReferenceWithOneCentredSample) {
 }
 
 TEST(HardGL, PcfSoftensOnlyTheEdge) {
-    auto sharp = renderScene("closed_form.json", {{"technique", R"({"name": "hard", "map_size": 256})"}});
+    auto sharp =
+        renderScene("closed_form.json", {{"technique", R"({"name": "hard", "map_size": 256})"}});
     auto soft = renderScene("closed_form.json",
                             {{"technique", R"({"name": "hard", "map_size": 256, "pcf": 5})"}});
     const auto& vs = channel(sharp, "visibility");

@@ -7,7 +7,9 @@
 using penumbra::InputError;
 using penumbra::parseFrameSpec;
 
-TEST(FrameSpec, SingleFrame) { EXPECT_EQ(parseFrameSpec("7", "--frames"), std::vector<int>{7}); }
+TEST(FrameSpec, SingleFrame) {
+    EXPECT_EQ(parseFrameSpec("7", "--frames"), std::vector<int>{7});
+}
 
 TEST(FrameSpec, Range) {
     auto f = parseFrameSpec("1-120", "--frames");

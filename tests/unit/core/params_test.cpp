@@ -37,15 +37,19 @@ TEST(Params, DefaultsFillEveryKey) {
 }
 
 TEST(Params, GivenValuesWin) {
-    auto p = resolveParams(
-        kSpecs, nlohmann::json::parse(R"({"samples": 4, "epsilon": 0, "jitter": false, "mode": "relative"})"),
-        "s.json: technique");
+    auto p =
+        resolveParams(kSpecs,
+                      nlohmann::json::parse(
+                          R"({"samples": 4, "epsilon": 0, "jitter": false, "mode": "relative"})"),
+                      "s.json: technique");
     EXPECT_EQ(p.getInt("samples"), 4);
     EXPECT_EQ(p.getFloat("epsilon"), 0.0);
     EXPECT_FALSE(p.getBool("jitter"));
     EXPECT_EQ(p.getString("mode"), "relative");
     // A whole float is accepted for an int parameter: JSON does not tell 4 from 4.0.
-    EXPECT_EQ(resolveParams(kSpecs, nlohmann::json::parse(R"({"samples": 4.0})"), "t").getInt("samples"), 4);
+    EXPECT_EQ(
+        resolveParams(kSpecs, nlohmann::json::parse(R"({"samples": 4.0})"), "t").getInt("samples"),
+        4);
 }
 
 TEST(Params, RejectionsNameTheKey) {
