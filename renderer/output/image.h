@@ -28,6 +28,7 @@ struct Image {
             if (c.name == name) return &c;
         return nullptr;
     }
+    // The reference stays valid until the next add() unless channels was reserved beforehand.
     ImageChannel& add(std::string name, PixelType type) {
         channels.push_back(
             {std::move(name), type, std::vector<float>(static_cast<size_t>(width) * height, 0.0f)});

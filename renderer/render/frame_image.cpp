@@ -24,6 +24,8 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
     auto id = passes::readTexture(gbuffer.id(), w, h, 1, GL_RED_INTEGER);
     auto visibility = passes::readTexture(shade.visibility(), w, h, 1, GL_RED);
 
+    // add() returns references into img.channels: reserve so none moves while they are held.
+    img.channels.reserve(13 + diagnostics.size());
     auto& r = img.add("R", PixelType::Half);
     auto& g = img.add("G", PixelType::Half);
     auto& b = img.add("B", PixelType::Half);
