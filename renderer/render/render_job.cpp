@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -45,8 +46,8 @@ Params resolveFor(const techniques::TechniqueInfo& info, const scene::Scene& s) 
     return resolveParams(info.params, s.technique, s.path.string() + ": technique");
 }
 
-std::vector<FramePlan> planFrames(const RenderRequest& req, const scene::SceneSource& source,
-                                  const std::string& scene_name, const std::vector<int>& frames) {
+std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& scene_name,
+                                  const std::vector<int>& frames) {
     const bool several = frames.size() > 1;
     const std::string exr_pattern = req.output.value_or("out/" + scene_name + ".####.exr");
     std::vector<FramePlan> plans;
@@ -71,7 +72,6 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const scene::SceneSo
         p.skip = req.skip_existing && std::filesystem::exists(p.exr);
         plans.push_back(p);
     }
-    (void)source;
     return plans;
 }
 
@@ -149,7 +149,13 @@ int runRenderJob(const RenderRequest& req) {
     const techniques::TechniqueInfo& info = findTechniqueOrThrow(first, req);
     Params params = resolveFor(info, first);
     for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
-    std::vector<FramePlan> plans = planFrames(req, source, first.name, frames);
+    std::vector<FramePlan> plans = planFrames(req, first.name, frames);
+    if (std::all_of(plans.begin(), plans.end(), [](const FramePlan& p) { return p.skip; })) {
+        if (!req.quiet)
+            std::fprintf(stderr, "penumbra: all %zu frames exist already (--skip-existing)\n",
+                         plans.size());
+        return 0;  // a resumed farm job with nothing left needs no GL context
+    }
 
     // 2. The context (exit 3 if none), then the limits only GL knows.
     auto context = gl::Context::create(req.gl);
