@@ -1,5 +1,7 @@
 // `penumbra render SCENE.json [options]`: argv -> RenderRequest; no GL, no JSON details here.
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
@@ -14,7 +16,7 @@ Renders the scene's frames offscreen with one soft-shadow technique and writes, 
 OpenEXR image (beauty, depth, position, normal, visibility, id, diagnostics) and a timing JSON.
 
 options:
-  -t, --technique NAME   hard, reference (see `penumbra techniques`); overrides technique.name
+  -t, --technique NAME   a technique of `penumbra techniques`; overrides technique.name
   -D, --set KEY=VALUE    override a scene value by dotted path (repeatable); VALUE is JSON,
                          a bare word is a string: -D technique.samples=8 -D lights.0.size=[1,1]
   -o, --output PATTERN   EXR path; a run of # is the zero-padded frame number
@@ -23,6 +25,10 @@ options:
       --preview PATTERN  also write a tone-mapped PNG
   -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2 (default: the scene's animation
                          range, else frame 0)
+      --frame-from-env VAR  render the one frame named by environment variable VAR (a farm's
+                         task index, e.g. SLURM_ARRAY_TASK_ID), plus --frame-offset K
+      --frame-offset K   added to --frame-from-env's value (default 0)
+      --list-frames      print the frames this command would render, one per line, and exit
       --size WxH         image size (same as -D image.width=W -D image.height=H)
       --backend B        auto (default), egl (device, then surfaceless), egl-device,
                          egl-surfaceless, osmesa
@@ -37,6 +43,18 @@ options:
 exit codes: 0 all frames written, 1 a frame failed at run time, 2 bad command line or input,
 3 no usable OpenGL backend.
 )";
+
+// The frame named by environment variable VAR plus OFFSET, as a frame spec.
+std::string frameFromEnvironment(const ArgCursor& c, const std::string& var, long offset) {
+    const char* value = std::getenv(var.c_str());
+    if (!value) c.fail("--frame-from-env: environment variable " + var + " is not set");
+    std::string text(value);
+    long frame = 0;
+    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), frame);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size())
+        c.fail("--frame-from-env: " + var + "='" + text + "' is not a whole number");
+    return std::to_string(frame + offset);
+}
 
 // A non-empty pattern for FLAG.
 std::string pattern(const ArgCursor& c, const char* flag, const std::string& v) {
@@ -61,6 +79,8 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
         req.preview = pattern(c, "--preview", *v);
     } else if ((v = c.option("-f", "--frames"))) {
         req.frames = *v;
+    } else if (c.flag("", "--list-frames")) {
+        req.list_frames = true;
     } else if ((v = c.option("", "--size"))) {
         auto [w, h] = parseSize(c, "--size", *v);
         req.overrides.push_back({"image.width", std::to_string(w)});
@@ -84,13 +104,23 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
 int runRender(const Args& args) {
     ArgCursor c("render", args);
     render::RenderRequest req;
-    std::optional<std::string> scene;
+    std::optional<std::string> scene, frame_env;
+    std::optional<int> frame_offset;
     while (!c.done()) {
         if (c.flag("-h", "--help")) {
             std::fputs(kHelp, stdout);
             return 0;
         }
         if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl)) continue;
+        if (auto v = c.option("", "--frame-from-env")) {
+            if (v->empty()) c.fail("--frame-from-env: empty variable name");
+            frame_env = *v;
+            continue;
+        }
+        if (auto v = c.option("", "--frame-offset")) {
+            frame_offset = parseInt(c, "--frame-offset", *v, -10'000'000, 10'000'000);
+            continue;
+        }
         if (auto p = c.positional()) {
             if (scene) c.fail("unexpected argument '" + *p + "': one scene per render");
             scene = *p;
@@ -99,6 +129,11 @@ int runRender(const Args& args) {
         c.unknown();
     }
     if (!scene) c.fail("missing SCENE.json (see --help)");
+    if (frame_offset && !frame_env) c.fail("--frame-offset: only with --frame-from-env");
+    if (frame_env) {
+        if (req.frames) c.fail("--frame-from-env: not with --frames");
+        req.frames = frameFromEnvironment(c, *frame_env, frame_offset.value_or(0));
+    }
     req.scene = *scene;
     return render::runRenderJob(req);
 }

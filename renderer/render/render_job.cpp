@@ -150,6 +150,11 @@ int runRenderJob(const RenderRequest& req) {
     Params params = resolveFor(info, first);
     for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
     std::vector<FramePlan> plans = planFrames(req, first.name, frames);
+    if (req.list_frames) {
+        for (const auto& p : plans)
+            if (!p.skip) std::printf("%d\n", p.frame);
+        return 0;
+    }
     if (std::all_of(plans.begin(), plans.end(), [](const FramePlan& p) { return p.skip; })) {
         if (!req.quiet)
             std::fprintf(stderr, "penumbra: all %zu frames exist already (--skip-existing)\n",

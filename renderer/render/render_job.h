@@ -23,6 +23,7 @@ struct RenderRequest {
     std::optional<std::string> frames;       // -f SPEC
     gl::ContextRequest gl;
     bool skip_existing = false;
+    bool list_frames = false;  // print the frames to render (stdout) and stop: no GL
     int warmup = 0;
     int repeat = 1;
     bool quiet = false;
