@@ -32,7 +32,11 @@ void OutputTargets::bind(int light) {
 }
 
 void FrameContext::pass(const std::string& name, const std::function<void()>& fn) {
-    std::string full = scene.lights.size() > 1 ? name + "@" + std::to_string(light) : name;
+    std::string full = name;
+    if (light >= 0 && scene.lights.size() > 1) {
+        full += '@';
+        full += std::to_string(light);
+    }
     gl::DebugGroup group(full);
     timer_.begin(full);
     fn();

@@ -46,12 +46,13 @@ public:
     const passes::GpuScene& gpu;
     const passes::GBuffer& gbuffer;
     const passes::CameraMatrices& camera;
-    int light = 0;  // index into scene.lights being rendered
+    int light = -1;  // index into scene.lights being rendered; -1 in the frame's own passes
     const scene::RectLight& currentLight() const {
         return scene.lights[static_cast<size_t>(light)];
     }
 
-    // Runs FN as one named, timed pass. With several lights, the name gets "@<light>".
+    // Runs FN as one named, timed pass. With several lights, a technique's pass (light >= 0)
+    // gets "@<light>" appended.
     void pass(const std::string& name, const std::function<void()>& fn);
     // Binds this light's output layers (see OutputTargets::bind).
     void bindOutput() { targets_.bind(light); }

@@ -42,7 +42,7 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
         ctx.light = l;
         technique_->render(ctx);
     }
-    ctx.light = 0;
+    ctx.light = -1;
     ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), s.lights); });
     return stats;
 }

@@ -36,6 +36,15 @@ assert t["stats"]["maps_rendered"] == 1
 assert t["backend"]["renderer"]
 PY
 
+# Several lights: technique passes carry @<light>, the frame's own passes do not.
+"$PENUMBRA" render "$PENUMBRA_SOURCE_DIR/tests/data/gl/two_lights.json" -o two.exr --quiet
+python3 - two.json <<'PY'
+import json, sys
+names = [p["name"] for p in json.load(open(sys.argv[1]))["passes"]]
+assert names[0] == "gbuffer" and "shade" in names, names
+assert "shadow_maps[0]@0" in names and "shadow_test[0]@1" in names, names
+PY
+
 # --skip-existing renders only what is missing.
 rm seq/a.02.exr
 before=$(stat -c %Y seq/a.01.exr)
