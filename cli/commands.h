@@ -13,5 +13,6 @@ int runRender(const Args& args);
 int runCompare(const Args& args);
 int runTechniques(const Args& args);
 int runInfo(const Args& args);
+int runSweep(const Args& args);
 
 }  // namespace penumbra::cli

@@ -18,6 +18,7 @@ commands:
   compare REF.exr TEST.exr        golden-image diff with idiff-style thresholds
   techniques [NAME] [--json]      list techniques and their parameters
   info [--json]                   OpenGL backends found and the one chosen
+  sweep SCENE.json --vary ... -o DIR   error and time over a cartesian product of values
   --version                       print the version
 
 Every command answers --help.
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
         if (command == "compare") return cli::runCompare(args);
         if (command == "techniques") return cli::runTechniques(args);
         if (command == "info") return cli::runInfo(args);
+        if (command == "sweep") return cli::runSweep(args);
         std::fprintf(stderr, "penumbra: unknown command '%s' (see penumbra --help)\n",
                      command.c_str());
         return static_cast<int>(ExitCode::BadInput);

@@ -43,9 +43,17 @@ void writePngPreview(const std::filesystem::path& path, const Image& image, floa
     for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) rgb8[i * 3 + c] = toneMap8(rgb[c]->pixels[i], exposure);
 
+    writePngRgb8(path, image.width, image.height, rgb8);
+}
+
+void writePngRgb8(const std::filesystem::path& path, int width, int height,
+                  const std::vector<unsigned char>& rgb8) {
+    if (width <= 0 || height <= 0 ||
+        rgb8.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3)
+        throw RuntimeError(path.string() + ": PNG pixels do not match " + std::to_string(width) +
+                           "x" + std::to_string(height));
     std::vector<unsigned char> png;
-    if (!stbi_write_png_to_func(appendBytes, &png, image.width, image.height, 3, rgb8.data(),
-                                image.width * 3))
+    if (!stbi_write_png_to_func(appendBytes, &png, width, height, 3, rgb8.data(), width * 3))
         throw RuntimeError(path.string() + ": PNG encoding failed");
 
     writeAtomically(path, [&](const std::filesystem::path& tmp) {

@@ -1,0 +1,101 @@
+// `penumbra sweep SCENE.json --vary ... -o DIR`: argv -> SweepRequest.
+#include <cstdio>
+
+#include "cli/backend_flags.h"
+#include "cli/commands.h"
+#include "renderer/render/sweep_job.h"
+
+namespace penumbra::cli {
+namespace {
+
+constexpr const char* kHelp =
+    R"(usage: penumbra sweep SCENE.json --vary KEY=VALUES [--vary ...] -o DIR [options]
+
+Renders the cartesian product of the varied values with one technique, compares every run
+with a reference (rendered once per distinct setting that changes the image, cached in
+DIR/cache by a hash of everything that determines it), and writes DIR/sweep.csv,
+DIR/sweep.json, each run's EXR, preview and error heatmap (DIR/runs/), and the report
+DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished runs.
+
+  --vary KEY=V1,V2,...     values (JSON; a bare word is a string): technique.pcf=1,3,5,
+                           lights.0.size=[0.5,0.5],[1,1]
+  --vary KEY=A:B:N[:log]   N values from A to B, evenly or geometrically spaced
+  -t, --technique NAME     the technique under test (default: the scene's)
+  -D, --set KEY=VALUE      a fixed override for every run and reference
+  --reference-technique T  the ground truth (default: reference)
+  --reference-set K=V      an override for the reference only (default technique.samples=32)
+  -f, --frame N            the frame to render (default 0)
+  --size WxH               image size
+  --warmup N, --repeat N   timing: untimed renders, then the median of N (default 1, 3)
+  -o, --output DIR         where everything goes (required)
+  --no-report              skip the plots and index.html
+  --backend B, --device N, --gl-debug, --quiet   as for render
+
+exit codes: 0 done, 1 a run or the report failed, 2 bad command line or input (found before
+anything renders), 3 no usable OpenGL backend.
+)";
+
+scene::Override keyValue(const ArgCursor& c, const char* flag, const std::string& v) {
+    size_t eq = v.find('=');
+    if (eq == std::string::npos || eq == 0)
+        c.fail(std::string(flag) + ": expected KEY=VALUE, got '" + v + "'");
+    return {v.substr(0, eq), v.substr(eq + 1)};
+}
+
+}  // namespace
+
+int runSweep(const Args& args) {
+    ArgCursor c("sweep", args);
+    render::SweepRequest req;
+    req.reference_sets.push_back({"technique.samples", "32"});
+    std::optional<std::string> scene, out;
+    while (!c.done()) {
+        if (c.flag("-h", "--help")) {
+            std::fputs(kHelp, stdout);
+            return 0;
+        }
+        std::optional<std::string> v;
+        if ((v = c.option("", "--vary"))) {
+            req.axes.push_back(parseVary(*v));
+        } else if ((v = c.option("-t", "--technique"))) {
+            req.technique = *v;
+        } else if ((v = c.option("-D", "--set"))) {
+            req.overrides.push_back(keyValue(c, "-D", *v));
+        } else if ((v = c.option("", "--reference-technique"))) {
+            req.reference_technique = *v;
+        } else if ((v = c.option("", "--reference-set"))) {
+            req.reference_sets.push_back(keyValue(c, "--reference-set", *v));
+        } else if ((v = c.option("-f", "--frame"))) {
+            req.frame = parseInt(c, "--frame", *v, -10'000'000, 10'000'000);
+        } else if ((v = c.option("", "--size"))) {
+            auto [w, h] = parseSize(c, "--size", *v);
+            req.overrides.push_back({"image.width", std::to_string(w)});
+            req.overrides.push_back({"image.height", std::to_string(h)});
+        } else if ((v = c.option("", "--warmup"))) {
+            req.warmup = parseInt(c, "--warmup", *v, 0, 100);
+        } else if ((v = c.option("", "--repeat"))) {
+            req.repeat = parseInt(c, "--repeat", *v, 1, 100);
+        } else if ((v = c.option("-o", "--output"))) {
+            if (v->empty()) c.fail("--output: empty folder name");
+            out = *v;
+        } else if (c.flag("", "--no-report")) {
+            req.report = false;
+        } else if (c.flag("-q", "--quiet")) {
+            req.quiet = true;
+        } else if (parseBackendFlag(c, req.gl)) {
+        } else if ((v = c.positional())) {
+            if (scene) c.fail("unexpected argument '" + *v + "': one scene per sweep");
+            scene = *v;
+        } else {
+            c.unknown();
+        }
+    }
+    if (!scene) c.fail("missing SCENE.json (see --help)");
+    if (!out) c.fail("missing -o DIR");
+    if (req.axes.empty()) c.fail("nothing to vary: give at least one --vary KEY=VALUES");
+    req.scene = *scene;
+    req.out = *out;
+    return render::runSweepJob(req);
+}
+
+}  // namespace penumbra::cli

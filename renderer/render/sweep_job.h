@@ -1,0 +1,36 @@
+// `penumbra sweep` as a job: the cartesian product of --vary axes rendered with one technique,
+// each run compared against a reference rendered once per distinct image-changing setting and
+// cached by a hash of what determines it; results as CSV, JSON, images and a report.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/core/sweep_spec.h"
+#include "renderer/gl/context.h"
+#include "renderer/scene/scene_source.h"
+
+namespace penumbra::render {
+
+struct SweepRequest {
+    std::filesystem::path scene;
+    std::vector<scene::Override> overrides;  // -D and --size, before the varied values
+    std::optional<std::string> technique;    // -t
+    std::vector<VaryAxis> axes;              // --vary
+    std::string reference_technique = "reference";
+    std::vector<scene::Override> reference_sets;  // --reference-set, after the defaults
+    int frame = 0;
+    std::filesystem::path out;  // -o DIR
+    gl::ContextRequest gl;
+    int warmup = 1, repeat = 3;
+    bool quiet = false;
+    bool report = true;  // run scripts/sweep-report at the end
+};
+
+// Returns 0, or 1 when a run or the report failed. Throws InputError for bad input (before any
+// rendering) and BackendError.
+int runSweepJob(const SweepRequest& request);
+
+}  // namespace penumbra::render
