@@ -28,6 +28,8 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
   --size WxH               image size
   --warmup N, --repeat N   timing: untimed renders, then the median of N (default 1, 3)
   -o, --output DIR         where everything goes (required)
+  -j, --jobs N             render the runs as N parallel processes through GNU parallel
+                           (timings then compete for the machine: compare them with care)
   --no-report              skip the plots and index.html
   --backend B, --device N, --gl-debug, --quiet   as for render
 
@@ -78,6 +80,10 @@ int runSweep(const Args& args) {
         } else if ((v = c.option("-o", "--output"))) {
             if (v->empty()) c.fail("--output: empty folder name");
             out = *v;
+        } else if ((v = c.option("-j", "--jobs"))) {
+            req.jobs = parseInt(c, "--jobs", *v, 1, 256);
+        } else if ((v = c.option("", "--run-index"))) {
+            req.run_index = parseInt(c, "--run-index", *v, 1, 1'000'000);
         } else if (c.flag("", "--no-report")) {
             req.report = false;
         } else if (c.flag("-q", "--quiet")) {
@@ -95,6 +101,15 @@ int runSweep(const Args& args) {
     if (req.axes.empty()) c.fail("nothing to vary: give at least one --vary KEY=VALUES");
     req.scene = *scene;
     req.out = *out;
+    // The arguments of each parallel job: these, less --jobs.
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "-j" || args[i] == "--jobs") {
+            ++i;
+            continue;
+        }
+        if (args[i].rfind("--jobs=", 0) == 0) continue;
+        req.job_args.push_back(args[i]);
+    }
     return render::runSweepJob(req);
 }
 

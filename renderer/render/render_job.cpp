@@ -133,6 +133,7 @@ private:
 }  // namespace
 
 int runRenderJob(const RenderRequest& req) {
+    const auto job_start = Clock::now();
     // 1. Everything from the input, validated before any GL or output.
     scene::LoadOptions options;
     options.technique = req.technique;
@@ -242,10 +243,6 @@ int runRenderJob(const RenderRequest& req) {
             if (!plan.preview.empty()) report.output["preview"] = plan.preview;
             output::writeTimingJson(plan.timing, report);
             ++written;
-            if (!req.quiet && !progress_on) {
-                std::fprintf(stderr, "penumbra: frame %d: wrote %s\n", plan.frame,
-                             plan.exr.c_str());
-            }
         } catch (const RuntimeError& e) {
             progress.done();
             std::fprintf(stderr, "penumbra: frame %d: %s\n", plan.frame, e.what());
@@ -254,8 +251,9 @@ int runRenderJob(const RenderRequest& req) {
     }
     progress.done();
     if (!req.quiet && plans.size() > 1)
-        std::fprintf(stderr, "penumbra: %d written, %d skipped, %d failed\n", written, skipped,
-                     failed);
+        std::fprintf(stderr, "penumbra: %zu frames: %d written, %d skipped, %d failed, %.1f s\n",
+                     plans.size(), written, skipped, failed,
+                     std::chrono::duration<double>(Clock::now() - job_start).count());
     return failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
 }
 

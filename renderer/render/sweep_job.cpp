@@ -163,6 +163,8 @@ std::string toCsv(const json& sweep) {
     return out.str();
 }
 
+bool spawnAndWait(const std::vector<std::string>& args, bool quiet);
+
 bool runReport(const fs::path& dir, bool quiet) {
     const char* env = std::getenv("PENUMBRA_SWEEP_REPORT");
     fs::path script =
@@ -173,19 +175,38 @@ bool runReport(const fs::path& dir, bool quiet) {
                      script.c_str());
         return false;
     }
-    // Run it directly (no shell, so no quoting of paths), stdout silenced when quiet.
-    const std::string script_s = script.string(), dir_s = dir.string();
-    char* argv[] = {const_cast<char*>(script_s.c_str()), const_cast<char*>(dir_s.c_str()), nullptr};
+    return spawnAndWait({script.string(), dir.string()}, quiet);  // no shell: no quoting
+}
+
+// Spawns ARGV (argv[0] looked up in PATH) and waits; STDOUT to /dev/null when QUIET.
+bool spawnAndWait(const std::vector<std::string>& args, bool quiet) {
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     if (quiet) posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     pid_t pid = 0;
-    int rc = posix_spawn(&pid, script_s.c_str(), &actions, nullptr, argv, environ);
+    int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) return false;
     int status = 0;
     if (waitpid(pid, &status, 0) < 0) return false;
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// Renders runs 1..COUNT as `penumbra sweep ... --run-index K` jobs, REQ.jobs at a time, through
+// GNU parallel. False when parallel is missing or a job failed.
+bool runParallel(const SweepRequest& req, size_t count) {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return false;
+    std::vector<std::string> args = {"parallel",    "--will-cite", "-j", std::to_string(req.jobs),
+                                     self.string(), "sweep"};
+    args.insert(args.end(), req.job_args.begin(), req.job_args.end());
+    args.insert(args.end(), {"--run-index", "{}", "--quiet", ":::"});
+    for (size_t k = 1; k <= count; ++k) args.push_back(std::to_string(k));
+    return spawnAndWait(args, req.quiet);
 }
 
 }  // namespace
@@ -220,19 +241,47 @@ int runSweepJob(const SweepRequest& req) {
     if (ec) throw RuntimeError(req.out.string() + ": cannot create folder: " + ec.message());
 
     // 2. References that the cache lacks.
-    auto context = gl::Context::create(req.gl);
-    const gl::ContextInfo& gl = context->info();
-    gl::enableDebugOutput(req.gl.debug);
+    if (req.run_index && (*req.run_index < 1 || *req.run_index > static_cast<int>(runs.size())))
+        throw InputError("--run-index: " + std::to_string(*req.run_index) + " is not a run (1 to " +
+                         std::to_string(runs.size()) + ")");
+    int rendered_by_jobs = 0;  // runs the parallel jobs rendered (new run records)
+    if (req.jobs > 1 && !req.run_index) {
+        auto records = [&] {
+            int n = 0;
+            for (size_t k = 1; k <= runs.size(); ++k) {
+                char name[40];
+                std::snprintf(name, sizeof name, "run-%04zu.json", k);
+                n += fs::exists(req.out / "runs" / name);
+            }
+            return n;
+        };
+        const int before = records();
+        if (!runParallel(req, runs.size()))
+            std::fprintf(stderr,
+                         "penumbra: sweep: some parallel runs failed; retrying them here\n");
+        rendered_by_jobs = records() - before;
+    }
+    std::unique_ptr<gl::Context> context;  // created when something has to render
+    auto glInfo = [&]() -> const gl::ContextInfo& {
+        if (!context) {
+            context = gl::Context::create(req.gl);
+            gl::enableDebugOutput(req.gl.debug);
+        }
+        return context->info();
+    };
     int rendered_refs = 0, rendered_runs = 0, failed = 0;
+    const bool progress = !req.quiet && isatty(STDERR_FILENO);  // progress only on a terminal
     std::vector<fs::path> ref_paths;  // cache/reference-<hash>.exr per reference
     for (size_t i = 0; i < references.size(); ++i) {
         fs::path path = req.out / "cache" / ("reference-" + references[i].hash + ".exr");
         ref_paths.push_back(path);
-        if (fs::exists(path)) continue;
-        if (!req.quiet)
+        const bool needed =
+            !req.run_index || run_reference[static_cast<size_t>(*req.run_index - 1)] == i;
+        if (fs::exists(path) || !needed) continue;
+        if (progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());
-        output::writeExr(path, renderJob(references[i], req, gl, 0, 1).image);
+        output::writeExr(path, renderJob(references[i], req, glInfo(), 0, 1).image);
         ++rendered_refs;
     }
 
@@ -242,6 +291,7 @@ int runSweepJob(const SweepRequest& req) {
     compare.channels = {"visibility"};
     compare.fail = 0.05;  // fail_fraction: share of pixels whose visibility is off by > 0.05
     for (size_t i = 0; i < runs.size(); ++i) {
+        if (req.run_index && static_cast<int>(i) + 1 != *req.run_index) continue;
         char id[32];
         std::snprintf(id, sizeof id, "run-%04zu", i + 1);
         const fs::path record = req.out / "runs" / (std::string(id) + ".json");
@@ -256,11 +306,11 @@ int runSweepJob(const SweepRequest& req) {
                 entry = old;
         }
         if (entry.is_null()) {
-            if (!req.quiet)
+            if (progress)
                 std::fprintf(stderr, "penumbra: sweep: run %zu of %zu %s\n", i + 1, runs.size(),
                              values.dump().c_str());
             try {
-                Rendered r = renderJob(runs[i], req, gl, req.warmup, req.repeat);
+                Rendered r = renderJob(runs[i], req, glInfo(), req.warmup, req.repeat);
                 const std::string base = std::string("runs/") + id;
                 output::writeExr(req.out / (base + ".exr"), r.image);
                 output::writePngPreview(req.out / (base + ".png"), r.image);
@@ -290,6 +340,8 @@ int runSweepJob(const SweepRequest& req) {
         sweep_runs.push_back(entry);
     }
 
+    if (req.run_index) return failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
+
     // 4. The tables, then the report.
     json varied = json::array();
     for (const auto& a : req.axes)
@@ -307,7 +359,7 @@ int runSweepJob(const SweepRequest& req) {
         {"frame", req.frame},
         {"varied", varied},
         {"reference", {{"technique", req.reference_technique}, {"overrides", ref_overrides}}},
-        {"backend", gl.toJson()},
+        {"backend", glInfo().toJson()},
         {"runs", sweep_runs}};
     writeFileAtomically(req.out / "sweep.json", sweep.dump(2) + "\n");
     writeFileAtomically(req.out / "sweep.csv", toCsv(sweep));
@@ -315,7 +367,8 @@ int runSweepJob(const SweepRequest& req) {
         std::fprintf(stderr,
                      "penumbra: sweep: %zu runs (%d rendered, %zu reused, %d failed), %zu "
                      "references (%d rendered); %s\n",
-                     runs.size(), rendered_runs, sweep_runs.size() - rendered_runs, failed,
+                     runs.size(), rendered_runs + rendered_by_jobs,
+                     sweep_runs.size() - rendered_runs - rendered_by_jobs, failed,
                      references.size(), rendered_refs, (req.out / "sweep.json").c_str());
     if (req.report && !runReport(req.out, req.quiet)) {
         std::fprintf(stderr, "penumbra: sweep: the report failed\n");

@@ -27,6 +27,12 @@ struct SweepRequest {
     int warmup = 1, repeat = 3;
     bool quiet = false;
     bool report = true;  // run scripts/sweep-report at the end
+    // --jobs N: render the runs as N parallel `penumbra sweep --run-index K` processes through
+    // GNU parallel (the engine of scripts/sequence), then collect. JOB_ARGS are the sweep's own
+    // arguments (without --jobs) for those processes.
+    int jobs = 1;
+    std::vector<std::string> job_args;
+    std::optional<int> run_index;  // --run-index K (1-based): render run K only, no tables
 };
 
 // Returns 0, or 1 when a run or the report failed. Throws InputError for bad input (before any

@@ -36,6 +36,12 @@ PY
 grep -q "4 runs (0 rendered, 4 reused, 0 failed), 2 references (0 rendered)" log.txt ||
     { cat log.txt; fail "resume rendered again"; }
 
+# The same sweep as 2 parallel jobs (GNU parallel, the engine of scripts/sequence): same images.
+"$PENUMBRA" sweep "$scene" -t hard --vary technique.pcf=1,5 --vary 'lights.0.size=[0.5,0.5],[1.5,1.5]' \
+    --reference-set technique.samples=4 --repeat 1 -o sw2 --no-report -j 2 2>log.txt
+grep -q "4 runs (4 rendered, 0 reused, 0 failed)" log.txt || { cat log.txt; fail "parallel sweep"; }
+for f in sw/runs/run-*.exr; do cmp "$f" "sw2/runs/$(basename "$f")" || fail "$f differs in parallel"; done
+
 # Bad input: exit 2, nothing created.
 expect_exit 2 "--vary technique.pcf=1:5:0" -- "$PENUMBRA" sweep "$scene" --vary technique.pcf=1:5:0 -o bad
 expect_exit 2 "technique.pcf" -- "$PENUMBRA" sweep "$scene" -t hard --vary technique.pcf=1,99 -o bad
