@@ -30,8 +30,11 @@ SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
     if (casters.empty() || zmax <= 0.0f) {
         zmin = 0.01f, zmax = 1.0f;  // nothing in front of the light: any frustum is empty
     }
-    const float near = std::max(zmin, zmax * 1e-4f);
-    const float far = zmax * 1.0001f + 1e-5f;
+    // A margin on both planes: a flat caster parallel to the light lies exactly at zmin, where
+    // rasterisation would clip it away.
+    const float margin = 0.01f * std::max(zmax - zmin, std::fabs(zmin)) + 1e-5f;
+    const float near = std::max(zmin - margin, zmax * 1e-4f);
+    const float far = zmax + margin;
     if (!casters.empty()) {
         for (int i = 0; i < 8; ++i) {
             glm::vec3 c((i & 1) ? casters.max.x : casters.min.x,

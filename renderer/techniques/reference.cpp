@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 
+#include "renderer/techniques/jitter_hash.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/registry_entries.h"
 
@@ -19,16 +20,6 @@ constexpr std::array kReferenceParams = {
     kNormalOffsetParam,
     kDepthBiasParam,
 };
-
-// A small integer hash (splitmix-style) for deterministic jitter.
-float hashToUnit(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    std::uint64_t x = (std::uint64_t(a) << 42) ^ (std::uint64_t(b) << 21) ^ c;
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    x ^= x >> 31;
-    return static_cast<float>(x >> 40) / static_cast<float>(1u << 24);
-}
 
 class Reference final : public Technique {
 public:

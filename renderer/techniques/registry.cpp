@@ -7,7 +7,8 @@
 namespace penumbra::techniques {
 
 std::span<const TechniqueInfo> allTechniques() {
-    static const std::array<TechniqueInfo, 2> all = {kHardTechnique, kReferenceTechnique};
+    static const std::array<TechniqueInfo, 4> all = {kHardTechnique, kReferenceTechnique,
+                                                     kAdaptiveTechnique, kSsmTechnique};
     return all;
 }
 

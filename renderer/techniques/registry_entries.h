@@ -6,4 +6,6 @@
 namespace penumbra::techniques {
 extern const TechniqueInfo kHardTechnique;
 extern const TechniqueInfo kReferenceTechnique;
+extern const TechniqueInfo kSsmTechnique;
+extern const TechniqueInfo kAdaptiveTechnique;
 }  // namespace penumbra::techniques

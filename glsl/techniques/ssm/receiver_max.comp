@@ -1,0 +1,28 @@
+#version 450 core
+// `ssm` receiver pyramid: level 0 is the receiver map's linear depth with empty texels as -1;
+// each further level holds the farthest receiver of the texels below it, so a splat quad
+// can find the farthest receiver under it in four fetches.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0) uniform sampler2D u_source;  // the depth map, or the pyramid itself
+layout(r32f, binding = 0) uniform writeonly image2D u_target;
+uniform int u_from_depth;    // 1: read the depth map, 0: reduce level u_source_level
+uniform int u_source_level;
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(u_target);
+    if (any(greaterThanEqual(p, size))) return;
+    float d;
+    if (u_from_depth == 1) {
+        d = texelFetch(u_source, p, 0).r;
+        if (d >= 1.0) d = -1.0;
+    } else {
+        // 3 x 3, not 2 x 2: an odd level's last row and column belong to the texels before.
+        ivec2 below = textureSize(u_source, u_source_level) - 1;
+        d = -1.0;
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 3; ++x)
+                d = max(d, texelFetch(u_source, min(2 * p + ivec2(x, y), below), u_source_level).r);
+    }
+    imageStore(u_target, p, vec4(d, 0.0, 0.0, 0.0));
+}

@@ -1,0 +1,103 @@
+#version 450 core
+// `ssm` splat: one instance per occluder-map texel, a micro-patch parallel to the light at the
+// texel's depth. Four strip vertices span its penumbra rectangle on the soft shadow map
+// (Atty et al. 3.3); empty texels collapse outside the clip volume. Built on the GPU from
+// gl_InstanceID, or, with CPU_PATH, from micro-patches the host read back and uploaded (4.1).
+// With CLIP the extent uses the farthest receiver under the quad, not the farthest of all.
+#ifndef CPU_PATH
+#define CPU_PATH 0
+#endif
+#ifndef CLIP
+#define CLIP 0
+#endif
+
+uniform vec2 u_light_half;    // half the light's width and height
+uniform vec2 u_ssm_lo;        // soft-shadow-map window at distance 1
+uniform vec2 u_ssm_size;
+uniform int u_ssm_res;        // soft-shadow-map texels per side
+uniform float u_receiver_far; // farthest receiver: the virtual plane of the penumbra extent
+
+#if CPU_PATH
+struct Patch {
+    vec4 rect;  // window rectangle at distance 1 (x0, y0, x1, y1)
+    vec4 depth; // x: distance from the light
+};
+layout(std430, binding = 4) readonly buffer Patches { Patch u_patches[]; };
+#else
+layout(binding = 0) uniform sampler2D u_occluder;
+uniform int u_map_size;
+uniform vec2 u_occ_lo;       // occluder-map window at distance 1
+uniform vec2 u_occ_texel;    // one texel of it
+uniform float u_occ_near;
+uniform float u_occ_range;   // far - near
+uniform float u_empty;       // the cleared depth: 1 (nearest map) or 0 (farthest map)
+#endif
+
+#if CLIP
+// Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
+layout(binding = 2) uniform sampler2D u_receiver_max;
+uniform float u_receiver_near;
+uniform float u_receiver_range;
+#endif
+
+layout(std430, binding = 3) buffer Counters {
+    uint u_micro_patches;
+    uint u_texels_touched;
+};
+
+flat out vec4 v_patch;  // micro-patch in the light's frame at its depth (x0, y0, x1, y1)
+flat out float v_depth; // its distance from the light
+
+void main() {
+#if CPU_PATH
+    Patch p = u_patches[gl_InstanceID];
+    vec4 rect = p.rect;
+    float z = p.depth.x;
+#else
+    ivec2 texel = ivec2(gl_InstanceID % u_map_size, gl_InstanceID / u_map_size);
+    float d = texelFetch(u_occluder, texel, 0).r;
+    if (d == u_empty) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    vec2 lo = u_occ_lo + vec2(texel) * u_occ_texel;
+    vec4 rect = vec4(lo, lo + u_occ_texel);
+    float z = u_occ_near + d * u_occ_range;
+#endif
+    // Penumbra rectangle on the virtual plane (3.3), in window units: the patch grown by half
+    // the light times (1/z_O - 1/z_R).
+    vec2 grow = u_light_half * max(1.0 / z - 1.0 / u_receiver_far, 0.0);
+    vec4 extent = vec4(rect.xy - grow, rect.zw + grow);
+    vec4 ndc = (extent - u_ssm_lo.xyxy) / u_ssm_size.xyxy * 2.0 - 1.0;
+    vec4 px = clamp((ndc * 0.5 + 0.5) * float(u_ssm_res), 0.0, float(u_ssm_res));
+#if CLIP
+    // Shrink the extent to the farthest receiver under it: the level whose texels are at least
+    // as wide as the quad, four fetches; no receiver behind the patch culls it.
+    vec2 span = max(px.zw - px.xy, vec2(1.0));
+    int levels = textureQueryLevels(u_receiver_max);
+    int level = min(int(ceil(log2(max(span.x, span.y)))), levels - 1);
+    ivec2 last = textureSize(u_receiver_max, level) - 1;
+    ivec2 base = min(ivec2(px.xy) >> level, last);
+    float dmax = -1.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+            dmax = max(dmax, texelFetch(u_receiver_max, min(base + ivec2(x, y), last), level).r);
+    float zmax = u_receiver_near + dmax * u_receiver_range;
+    if (dmax < 0.0 || zmax <= z || px.z <= px.x || px.w <= px.y) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    grow = u_light_half * max(1.0 / z - 1.0 / zmax, 0.0);
+    extent = vec4(rect.xy - grow, rect.zw + grow);
+    ndc = (extent - u_ssm_lo.xyxy) / u_ssm_size.xyxy * 2.0 - 1.0;
+    px = clamp((ndc * 0.5 + 0.5) * float(u_ssm_res), 0.0, float(u_ssm_res));
+#endif
+    vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+    gl_Position = vec4(mix(ndc.xy, ndc.zw, corner), 0.0, 1.0);
+    v_patch = rect * z;
+    v_depth = z;
+    if (gl_VertexID == 0) {
+        atomicAdd(u_micro_patches, 1u);
+        atomicAdd(u_texels_touched, uint((px.z - px.x) * (px.w - px.y) + 0.5));
+    }
+}

@@ -1,0 +1,359 @@
+// `adaptive`: Schwärzler 2009, adaptive light-source sampling. Shadow maps at the light's
+// corners, refined by a quadtree wherever two maps disagree on too many camera pixels.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/core/error.h"
+#include "renderer/passes/bindings.h"
+#include "renderer/techniques/adaptive/light_quadtree.h"
+#include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/registry_entries.h"
+
+namespace penumbra::techniques {
+namespace {
+
+constexpr std::array kAdaptiveParams = {
+    floatParam("epsilon", 0.003, 0.0, 1.0,
+               "refine when disagreeing pixels / metric area >= epsilon (eq. 4)"),
+    floatParam("gamma", 0.01, 0.0, 1.0,
+               "two stored depths are equal when they differ by less than gamma (eq. 3 / 7)"),
+    enumParam("compare", "depth", "depth|shadow_test",
+              "what two maps are compared on: their stored depths (paper, with gamma) or their "
+              "hard-shadow test results for the receiver"),
+    enumParam("gamma_mode", "absolute", "absolute|relative",
+              "depth test: absolute |d_a - d_b| (eq. 3) or relative |1 - d_a/d_b| (eq. 7)"),
+    enumParam("reprojection", "camera", "camera|light_centre",
+              "where maps are compared: the camera view (view-dependent) or a map_size^2 view "
+              "from the light's centre (view-independent, section 4.1)"),
+    enumParam("metric", "global", "global|tile",
+              "global: eq. 4 over the whole frame (paper); tile: refine when any screen tile's "
+              "disagreeing share reaches tile_epsilon (the local metric 5.1 asks for)"),
+    intParam("tile_size", 32, 4, 1024, "tile side in pixels for metric \"tile\""),
+    floatParam("tile_epsilon", 0.05, 0.0, 1.0,
+               "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
+    enumParam("metric_area", "map", "map|screen",
+              "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
+    intParam("max_depth", 3, 0, 8, "deepest quadtree level"),
+    intParam("max_maps", 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
+    enumParam("subdivision", "auto", "auto|quad|linear",
+              "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
+              "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
+    enumParam("weights", "area", "area|paper|equal",
+              "sample weights, normalised: area (each leaf cell's area shared by its corners), "
+              "paper (1/(2^d+1)^2, eq. 5/6) or equal"),
+    enumParam("evaluation", "array", "array|accumulate",
+              "array: all maps in one pass over a texture array (3.4.2); accumulate: each map "
+              "added to the accumulation buffer right after it is rendered (3.4.1)"),
+    boolParam("jitter", true,
+              "move each sample to a random point of its finest-grid cell (false: the paper's "
+              "regular lattice, which aliases with edges parallel to the light's)"),
+    intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
+    intParam("pcf", 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
+    mapSizeParam(1024),
+    kNormalOffsetParam,
+    kDepthBiasParam,
+};
+
+adaptive::LightQuadtree::Weighting weighting(const std::string& name) {
+    using W = adaptive::LightQuadtree::Weighting;
+    return name == "paper" ? W::Paper : name == "equal" ? W::Equal : W::Area;
+}
+
+// Maps rendered per draw into the scratch array before they are copied to their layers.
+constexpr int kScratchLayers = 16;
+
+class Adaptive final : public Technique {
+public:
+    explicit Adaptive(const Params& p)
+        : epsilon_(p.getFloat("epsilon")),
+          screen_metric_(p.getString("metric_area") == "screen"),
+          tile_epsilon_(p.getFloat("tile_epsilon")),
+          light_centre_(p.getString("reprojection") == "light_centre"),
+          max_depth_(p.getInt("max_depth")),
+          max_maps_(p.getInt("max_maps")),
+          weighting_(weighting(p.getString("weights"))),
+          accumulate_path_(p.getString("evaluation") == "accumulate"),
+          subdivision_(p.getString("subdivision")),
+          jitter_(p.getBool("jitter")),
+          seed_(static_cast<unsigned>(p.getInt("seed"))),
+          settings_(samplingSettings(p)) {
+        compare_.gamma = static_cast<float>(p.getFloat("gamma"));
+        compare_.relative = p.getString("gamma_mode") == "relative";
+        compare_.tests = p.getString("compare") == "shadow_test";
+        compare_.normal_offset = settings_.test.normal_offset;
+        compare_.depth_bias = settings_.test.depth_bias;
+        if (p.getString("metric") == "tile") compare_.tile_size = p.getInt("tile_size");
+        settings_.test.pcf = p.getInt("pcf");
+        if (accumulate_path_ && weighting_ == adaptive::LightQuadtree::Weighting::Area)
+            throw RuntimeError(
+                "adaptive: evaluation \"accumulate\" adds each map when it is rendered, before "
+                "its area weight is known: use weights \"paper\" or \"equal\"");
+    }
+
+    void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {
+        max_maps_ =
+            std::min({max_maps_, std::max(gl.max_array_layers, 2), passes::kMaxSampleLookups});
+        maps_ = std::make_unique<passes::ShadowMapBatch>(settings_.map_size, max_maps_,
+                                                         gl.has_vertex_layer);
+        scratch_ = std::make_unique<passes::ShadowMapBatch>(
+            settings_.map_size, std::min(kScratchLayers, max_maps_), gl.has_vertex_layer);
+        accumulate_ = std::make_unique<passes::ShadowAccumulate>();
+        map_compare_ = std::make_unique<adaptive::MapCompare>();
+        if (light_centre_) {
+            const int size = settings_.map_size;
+            light_view_ = std::make_unique<passes::GBuffer>(size, size);
+            // Comparisons there write no diagnostic: a framebuffer without attachments.
+            light_view_fbo_ = gl::createFramebuffer("adaptive light-centre comparisons");
+            glNamedFramebufferParameteri(light_view_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, size);
+            glNamedFramebufferParameteri(light_view_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, size);
+        }
+    }
+
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        return {{"depth", DiagnosticChannel::Combine::Max}};
+    }
+
+    void render(render::FrameContext& ctx) override {
+        const scene::RectLight& light = ctx.currentLight();
+        const bool linear = subdivision_ == "linear" ||
+                            (subdivision_ == "auto" && light.size.y <= 1e-3f * light.size.x);
+        adaptive::LightQuadtree tree(max_depth_, linear, jitter_, seed_);
+        views_.clear();
+        ctx.bindOutput();
+        const float zero[4] = {0, 0, 0, 0};
+        glClearBufferfv(GL_COLOR, 0, zero);
+        glClearBufferfv(GL_COLOR, 1, zero);
+
+        if (light_centre_) {
+            const passes::CameraMatrices m = lightCentreView(ctx);
+            ctx.pass("adaptive_light_view", [&] { light_view_->render(ctx.gpu, m); });
+        }
+        const passes::GBuffer& receivers = light_centre_ ? *light_view_ : ctx.gbuffer;
+        const double area = screen_metric_
+                                ? double(receivers.width()) * double(receivers.height())
+                                : double(settings_.map_size) * double(settings_.map_size);
+        std::vector<adaptive::QuadtreeCell> cells{tree.root()};
+        int comparisons = 0, level = 0;
+        bool budget_hit = false;
+        for (;; ++level) {
+            renderNewMaps(ctx, tree, level);
+            if (level >= max_depth_ || cells.empty()) break;
+            // Both diagonals (or the ends) of every cell of this level, one query each.
+            std::vector<adaptive::CompareResult> counts;
+            int queued = 0;
+            for (const auto& c : cells) queued += int(tree.comparisons(c).size());
+            ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
+                if (light_centre_) {
+                    glBindFramebuffer(GL_FRAMEBUFFER, light_view_fbo_.id());
+                    glViewport(0, 0, receivers.width(), receivers.height());
+                } else {
+                    ctx.bindOutput();
+                }
+                map_compare_->begin(receivers, *maps_, light, compare_, queued);
+                for (const auto& c : cells)
+                    for (auto [a, b] : tree.comparisons(c)) map_compare_->compare(a, b, level);
+                counts = map_compare_->end();
+            });
+            comparisons += static_cast<int>(counts.size());
+            cells = splitCells(tree, cells, counts, area, budget_hit);
+        }
+
+        const int n = static_cast<int>(views_.size());
+        if (accumulate_path_) {
+            // The buffer holds sum_k w_k lit_k with unnormalised weights: scale by 1 / sum w.
+            double sum = 0;
+            for (const auto& s : tree.samples()) sum += sampleWeight(tree, s.depth);
+            ctx.pass("adaptive_normalise", [&] {
+                ctx.bindOutput();
+                glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                glEnable(GL_BLEND);
+                glBlendEquation(GL_FUNC_ADD);
+                const float scale = static_cast<float>(1.0 / sum);
+                glBlendColor(scale, scale, scale, scale);
+                glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);  // dst * scale; the source adds 0
+                accumulate_->render(ctx.gbuffer, *maps_, 0, 0, light, settings_.test);
+                glBlendFunc(GL_ONE, GL_ONE);
+                glDisable(GL_BLEND);
+                glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            });
+        } else {
+            // All maps of the light in one pass over the texture array (3.4.2).
+            const auto weights = tree.weights(weighting_);
+            for (size_t i = 0; i < views_.size(); ++i) {
+                views_[i].origin.w = weights[i];
+                views_[i].depth.y = weights[i];
+            }
+            views_buffer_.upload(views_);
+            ctx.pass("adaptive_eval", [&] {
+                ctx.bindOutput();
+                addToVisibility(ctx, *maps_, 0, n);
+            });
+        }
+
+        int depth_reached = 0;
+        for (const auto& s : tree.samples()) depth_reached = std::max(depth_reached, s.depth);
+        auto& st = ctx.stats;
+        st["maps_rendered"] = st.value("maps_rendered", 0) + n;
+        st["comparisons"] = st.value("comparisons", 0) + comparisons;
+        st["queries"] = st.value("queries", 0) + comparisons;
+        st["depth_reached"] = std::max(st.value("depth_reached", 0), depth_reached);
+        st["map_budget_hit"] = st.value("map_budget_hit", false) || budget_hit;
+    }
+
+private:
+    // Splits the CELLS whose comparisons (COUNTS, in comparisons() order) fail the metric, most
+    // disagreeing first so that the map budget goes where it matters; returns their children.
+    std::vector<adaptive::QuadtreeCell> splitCells(
+        adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
+        const std::vector<adaptive::CompareResult>& counts, double area, bool& budget_hit) const {
+        const double tile_area = double(compare_.tile_size) * double(compare_.tile_size);
+        std::vector<std::pair<double, size_t>> refine;
+        for (size_t i = 0, q = 0; i < cells.size(); ++i) {
+            double worst = 0;
+            bool split = false;
+            for (size_t k = 0; k < tree.comparisons(cells[i]).size(); ++k, ++q) {
+                const auto& r = counts[q];
+                worst = std::max(worst, double(r.pixels));
+                split |= compare_.tile_size > 0
+                             ? r.max_tile > 0 && double(r.max_tile) / tile_area >= tile_epsilon_
+                             : r.pixels > 0 && double(r.pixels) / area >= epsilon_;
+            }
+            if (split) refine.push_back({worst, i});
+        }
+        std::stable_sort(refine.begin(), refine.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::vector<adaptive::QuadtreeCell> next;
+        for (const auto& [worst, i] : refine) {
+            if (int(tree.samples().size()) + tree.newSamples(cells[i]) > max_maps_) {
+                budget_hit = true;
+                continue;
+            }
+            for (const auto& child : tree.split(cells[i])) next.push_back(child);
+        }
+        return next;
+    }
+
+    // A perspective view from the light's centre along its axis, covering every caster as
+    // seen from there, and every receiver behind them (section 4.1's reprojection target).
+    passes::CameraMatrices lightCentreView(const render::FrameContext& ctx) const {
+        const scene::RectLight& light = ctx.currentLight();
+        const passes::SampleView v = passes::makeSampleView(
+            light, light.position, ctx.gpu.casterBounds(), 1.0f, settings_.map_size);
+        const float n = v.forward.w;
+        const float l = v.frustum.x, b = v.frustum.y;
+        const float r = l + 1.0f / v.frustum.z, t = b + 1.0f / v.frustum.w;
+        passes::CameraMatrices m;
+        m.position = light.position;
+        m.view = glm::lookAt(light.position, light.position + light.forward(), light.upAxis());
+        m.projection = glm::frustum(l * n, r * n, b * n, t * n, n, n * 1e4f);
+        return m;
+    }
+
+    // Renders the samples without a map yet into their layers of maps_ (one pass per level).
+    void renderNewMaps(render::FrameContext& ctx, const adaptive::LightQuadtree& tree, int level) {
+        const scene::RectLight& light = ctx.currentLight();
+        const auto corners = light.corners();
+        const int first = static_cast<int>(views_.size());
+        for (size_t i = views_.size(); i < tree.samples().size(); ++i) {
+            const glm::vec2 uv = tree.samples()[i].uv;
+            glm::vec3 p =
+                corners[0] + (corners[1] - corners[0]) * uv.x + (corners[3] - corners[0]) * uv.y;
+            views_.push_back(
+                passes::makeSampleView(light, p, ctx.gpu.casterBounds(), 1.0f, settings_.map_size));
+        }
+        const int n = static_cast<int>(views_.size());
+        if (first == n) return;
+        if (accumulate_path_) {
+            // Each map is added with its unnormalised weight as soon as it exists (3.4.1); the
+            // G-buffer is the camera depth pre-pass, so only visible receivers accumulate.
+            for (int k = first; k < n; ++k) {
+                const float w = sampleWeight(tree, tree.samples()[size_t(k)].depth);
+                views_[size_t(k)].origin.w = w;
+                views_[size_t(k)].depth.y = w;
+            }
+            views_buffer_.upload(views_);
+            ctx.pass("adaptive_maps_accumulate[" + std::to_string(level) + "]", [&] {
+                for (int k = first; k < n; ++k) {
+                    scratch_->render(ctx.gpu, k, 1);
+                    copyToMaps(k, 1);
+                    ctx.bindOutput();
+                    addToVisibility(ctx, *scratch_, k, 1);
+                }
+            });
+            return;
+        }
+        views_buffer_.upload(views_);
+        ctx.pass("adaptive_maps[" + std::to_string(level) + "]", [&] {
+            for (int base = first; base < n; base += scratch_->layers()) {
+                const int count = std::min(scratch_->layers(), n - base);
+                scratch_->render(ctx.gpu, base, count);
+                copyToMaps(base, count);
+            }
+        });
+    }
+
+    // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).
+    void copyToMaps(int base, int count) {
+        glCopyImageSubData(scratch_->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0,
+                           maps_->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, base,
+                           settings_.map_size, settings_.map_size, count);
+    }
+
+    // Adds the weighted tests of BATCH's COUNT views from VIEW_BASE to the bound visibility.
+    void addToVisibility(render::FrameContext& ctx, const passes::ShadowMapBatch& batch,
+                         int view_base, int count) {
+        glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        accumulate_->render(ctx.gbuffer, batch, view_base, count, ctx.currentLight(),
+                            settings_.test);
+        glDisable(GL_BLEND);
+        glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+
+    // The unnormalised weight of a sample created at DEPTH (eq. 5/6), or 1.
+    float sampleWeight(const adaptive::LightQuadtree& tree, int depth) const {
+        if (weighting_ == adaptive::LightQuadtree::Weighting::Equal) return 1.0f;
+        const float per_axis = 1.0f / (std::ldexp(1.0f, depth) + 1.0f);
+        return tree.linear() ? per_axis : per_axis * per_axis;
+    }
+
+    double epsilon_;
+    bool screen_metric_;
+    double tile_epsilon_;
+    bool light_centre_;
+    int max_depth_;
+    int max_maps_;
+    adaptive::LightQuadtree::Weighting weighting_;
+    bool accumulate_path_;
+    std::string subdivision_;
+    bool jitter_;
+    unsigned seed_;
+    SamplingSettings settings_;
+    adaptive::CompareSettings compare_;
+    std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
+    std::unique_ptr<passes::ShadowAccumulate> accumulate_;
+    std::unique_ptr<adaptive::MapCompare> map_compare_;
+    std::unique_ptr<passes::GBuffer> light_view_;  // receivers seen from the light's centre
+    gl::Framebuffer light_view_fbo_;
+    passes::SampleViewBuffer views_buffer_;
+    std::vector<passes::SampleView> views_;
+};
+
+}  // namespace
+
+const TechniqueInfo kAdaptiveTechnique = {
+    "adaptive",
+    "adaptive light sampling (Schwarzler 2009): corner maps refined by a quadtree where maps "
+    "disagree in the camera view",
+    kAdaptiveParams,
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Adaptive>(p); }};
+
+}  // namespace penumbra::techniques

@@ -1,0 +1,109 @@
+// `adaptive`: two shadow maps compared over a G-buffer, counted by an occlusion query and by
+// per-tile atomic counters; see map_compare.h.
+#include "renderer/techniques/adaptive/map_compare.h"
+
+#include <algorithm>
+
+namespace penumbra::techniques::adaptive {
+namespace {
+// Storage-buffer binding of the tile counters (glsl/techniques/adaptive/compare.frag).
+constexpr GLuint kTileCountsBinding = 7;
+}  // namespace
+
+MapCompare::MapCompare()
+    : program_(gl::buildProgram("adaptive compare",
+                                {"passes/fullscreen.vert", "techniques/adaptive/compare.frag"})) {
+    glCreateSamplers(1, &sampler_);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
+
+MapCompare::~MapCompare() {
+    glDeleteSamplers(1, &sampler_);
+}
+
+void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& maps,
+                       const scene::RectLight& light, const CompareSettings& s, int count) {
+    used_ = 0;
+    tiles_ = 0;
+    if (s.tile_size > 0) {
+        const int tx = (gbuffer.width() + s.tile_size - 1) / s.tile_size;
+        const int ty = (gbuffer.height() + s.tile_size - 1) / s.tile_size;
+        tiles_ = tx * ty;
+        const size_t need = size_t(tiles_) * size_t(std::max(count, 1));
+        if (need > tile_capacity_ || !tile_counts_.id()) {
+            tile_counts_ = gl::createBuffer("adaptive tile counts");
+            glNamedBufferData(tile_counts_.id(), GLsizeiptr(need * sizeof(GLuint)), nullptr,
+                              GL_DYNAMIC_READ);
+            tile_capacity_ = need;
+        }
+        const GLuint zero = 0;
+        glClearNamedBufferSubData(tile_counts_.id(), GL_R32UI, 0, GLsizeiptr(need * sizeof(GLuint)),
+                                  GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCountsBinding, tile_counts_.id());
+        gl::setUniform(program_, "u_tiles_x", tx);
+    }
+    glUseProgram(program_.id());
+    glBindTextureUnit(0, gbuffer.position().id());
+    glBindTextureUnit(1, gbuffer.normal().id());
+    glBindTextureUnit(2, maps.depth().id());
+    glBindSampler(2, sampler_);
+    gl::setUniform(program_, "u_tile_size", tiles_ > 0 ? s.tile_size : 0);
+    gl::setUniform(program_, "u_gamma", s.gamma);
+    gl::setUniform(program_, "u_relative", s.relative ? 1 : 0);
+    gl::setUniform(program_, "u_tests", s.tests ? 1 : 0);
+    gl::setUniform(program_, "u_normal_offset", s.normal_offset);
+    gl::setUniform(program_, "u_depth_bias", s.depth_bias);
+    gl::setUniform(program_, "u_light_centre", light.position);
+    gl::setUniform(program_, "u_light_right", light.right());
+    gl::setUniform(program_, "u_light_up", light.upAxis());
+    gl::setUniform(program_, "u_light_forward", light.forward());
+    glDisable(GL_DEPTH_TEST);
+    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquationi(1, GL_MAX);
+    glBlendFunci(1, GL_ONE, GL_ONE);
+}
+
+void MapCompare::compare(int a, int b, int level) {
+    if (used_ == static_cast<int>(queries_.size()))
+        queries_.push_back(gl::createQuery(GL_SAMPLES_PASSED, "adaptive comparison"));
+    const int q = used_++;
+    gl::setUniform(program_, "u_view_a", a);
+    gl::setUniform(program_, "u_view_b", b);
+    gl::setUniform(program_, "u_level", level);
+    gl::setUniform(program_, "u_tile_slot", q * tiles_);
+    glBeginQuery(GL_SAMPLES_PASSED, queries_[static_cast<size_t>(q)].id());
+    fullscreen_.draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+}
+
+std::vector<CompareResult> MapCompare::end() {
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glBindSampler(2, 0);
+    glUseProgram(0);
+    std::vector<CompareResult> out(static_cast<size_t>(used_));
+    for (int i = 0; i < used_; ++i) {
+        GLuint v = 0;
+        glGetQueryObjectuiv(queries_[static_cast<size_t>(i)].id(), GL_QUERY_RESULT, &v);
+        out[size_t(i)].pixels = v;
+    }
+    if (tiles_ > 0 && used_ > 0) {
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::vector<GLuint> counts(size_t(tiles_) * size_t(used_));
+        glGetNamedBufferSubData(tile_counts_.id(), 0, GLsizeiptr(counts.size() * sizeof(GLuint)),
+                                counts.data());
+        for (size_t i = 0; i < counts.size(); ++i) {
+            auto& r = out[i / size_t(tiles_)];
+            r.max_tile = std::max(r.max_tile, counts[i]);
+        }
+    }
+    return out;
+}
+
+}  // namespace penumbra::techniques::adaptive

@@ -1,0 +1,61 @@
+// `adaptive`: the comparison of two light-sample shadow maps over a G-buffer (the camera's or
+// the light centre's), disagreeing pixels counted by an occlusion query and per screen tile.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/shadow_maps.h"
+#include "renderer/scene/scene.h"
+
+namespace penumbra::techniques::adaptive {
+
+struct CompareSettings {
+    float gamma = 0.01f;         // largest depth difference (or ratio deviation) still equal
+    bool relative = false;       // eq. 7 instead of eq. 3
+    bool tests = false;          // compare hard-shadow test results instead of stored depths
+    float normal_offset = 1.5f;  // of the hard tests, as in passes::ShadowTestSettings
+    float depth_bias = 0.0005f;
+    int tile_size = 0;  // > 0: also count disagreeing pixels per screen tile of this side
+};
+
+// What one comparison found.
+struct CompareResult {
+    unsigned pixels = 0;    // disagreeing pixels in the frame (the occlusion query)
+    unsigned max_tile = 0;  // most disagreeing pixels in one tile (0 without tiles)
+};
+
+class MapCompare {
+public:
+    MapCompare();
+    ~MapCompare();
+    MapCompare(const MapCompare&) = delete;
+    MapCompare& operator=(const MapCompare&) = delete;
+
+    // Sets up state for a series of at most COUNT comparisons of views in MAPS (layer = view
+    // index, views bound at kBindingSampleViews/kBindingSampleLookups) over GBUFFER. The
+    // caller has bound the output framebuffer; colour 0 is masked off, colour 1 gets
+    // max(level + 1).
+    void begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& maps,
+               const scene::RectLight& light, const CompareSettings& settings, int count);
+    // Queues the comparison of views A and B.
+    void compare(int a, int b, int level);
+    // Restores state; the results of this series, in compare() order (blocking).
+    std::vector<CompareResult> end();
+
+private:
+    gl::Program program_;
+    passes::Fullscreen fullscreen_;
+    unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
+    std::vector<gl::Query> queries_;
+    int used_ = 0;
+    int tiles_ = 0;  // tiles per comparison, 0: no tile counts this series
+    gl::Buffer tile_counts_;
+    size_t tile_capacity_ = 0;  // uints in tile_counts_
+};
+
+}  // namespace penumbra::techniques::adaptive

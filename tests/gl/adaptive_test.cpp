@@ -1,0 +1,275 @@
+// `adaptive` on small scenes: the quadtree's map and comparison counts, the refinement
+// diagnostic, and shadow-region error against `reference` N = 32 for fewer maps than N = 16.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "gl_test_env.h"
+#include "renderer/core/params.h"
+#include "renderer/render/frame_renderer.h"
+#include "renderer/techniques/technique.h"
+
+using penumbra::testing::channel;
+
+namespace {
+
+struct Result {
+    std::vector<float> visibility;
+    std::vector<float> depth;  // adaptive.depth, empty for other techniques
+    nlohmann::json stats;
+};
+
+// Renders tests/data/gl/NAME with TECHNIQUE (a JSON block) and further scene OVERRIDES and
+// returns visibility, the refinement diagnostic and the statistics.
+Result render(const std::string& name, const std::string& technique,
+              std::vector<penumbra::scene::Override> overrides = {}) {
+    using namespace penumbra;
+    overrides.push_back({"technique", technique});
+    const auto& info = penumbra::testing::glInfo();
+    auto source = scene::SceneSource::load(
+        std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
+    scene::Scene s = source.at(0);
+    const auto* t = techniques::findTechnique(s.technique.value("name", "hard"));
+    EXPECT_NE(t, nullptr);
+    Params params = resolveParams(t->params, s.technique, name + ": technique");
+    render::FrameRenderer renderer(info, s, *t, params);
+    render::PassTimer timer(info.software);
+    Result r;
+    r.stats = renderer.render(s, timer);
+    timer.finishFrame();
+    auto image = renderer.readImage();
+    r.visibility = channel(image, "visibility");
+    if (image.find("adaptive.depth")) r.depth = channel(image, "adaptive.depth");
+    return r;
+}
+
+std::string adaptive(const std::string& extra = "") {
+    return R"({"name": "adaptive", "map_size": 512)" + extra + "}";
+}
+std::string reference(int n) {
+    return R"({"name": "reference", "map_size": 512, "samples": )" + std::to_string(n) + "}";
+}
+
+// Mean |a - truth| over pixels where either is in shadow (below 0.999).
+double shadowMae(const std::vector<float>& a, const std::vector<float>& truth,
+                 long min_pixels = 500) {
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (a[i] >= 0.999f && truth[i] >= 0.999f) continue;
+        sum += std::fabs(double(a[i]) - double(truth[i]));
+        ++n;
+    }
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the image";
+    return n ? sum / double(n) : 1.0;
+}
+
+// The issue's bar on SCENE: default adaptive at most as far from reference N = 32 as
+// reference N = 8 is, with at most a third of the 256 maps reference N = 16 renders.
+void checkAgainstReference(const std::string& scene) {
+    const auto truth = render(scene, reference(32)).visibility;
+    const double ref8 = shadowMae(render(scene, reference(8)).visibility, truth);
+    const auto a = render(scene, adaptive());
+    const double mae = shadowMae(a.visibility, truth);
+    const int maps = a.stats.value("maps_rendered", 0);
+    std::printf(
+        "%s: adaptive MAE %.5f with %d maps (depth %d, %d comparisons); reference N=8 "
+        "MAE %.5f with 64 maps\n",
+        scene.c_str(), mae, maps, a.stats.value("depth_reached", 0),
+        a.stats.value("comparisons", 0), ref8);
+    EXPECT_LE(mae, ref8);
+    EXPECT_LE(maps, 85);  // a third of reference N = 16's 256 maps
+}
+
+}  // namespace
+
+TEST(AdaptiveGL, FullRefinementSharesCornerSamples) {
+    // epsilon 0 refines every cell: depth 2 is the full 5 x 5 grid, each shared corner
+    // rendered once, and 2 comparisons for each of the 1 + 4 cells above the last level.
+    auto r = render("closed_form.json", adaptive(R"(, "epsilon": 0, "max_depth": 2)"));
+    EXPECT_EQ(r.stats.value("maps_rendered", 0), 25);
+    EXPECT_EQ(r.stats.value("comparisons", 0), 10);
+    EXPECT_EQ(r.stats.value("queries", 0), 10);
+    EXPECT_EQ(r.stats.value("depth_reached", 0), 2);
+}
+
+TEST(AdaptiveGL, MapBudgetStopsRefinement) {
+    auto r =
+        render("closed_form.json", adaptive(R"(, "epsilon": 0, "max_depth": 4, "max_maps": 12)"));
+    EXPECT_LE(r.stats.value("maps_rendered", 0), 12);
+    EXPECT_TRUE(r.stats.value("map_budget_hit", false));
+}
+
+TEST(AdaptiveGL, DepthDiagnosticMarksThePenumbra) {
+    auto r = render("closed_form.json", adaptive());
+    ASSERT_EQ(r.depth.size(), r.visibility.size());
+    long marked = 0, marked_lit = 0;
+    for (size_t i = 0; i < r.depth.size(); ++i) {
+        if (r.depth[i] <= 0.0f) continue;
+        ++marked;
+        marked_lit += r.visibility[i] >= 0.999f;
+    }
+    EXPECT_GT(marked, 500);
+    // Disagreement between maps means some maps shadow the pixel, so it is not fully lit; 2 %
+    // allowance because the comparison projects the receiver itself while the shadow test
+    // projects it offset along its normal, which moves the outer penumbra edge by a texel.
+    EXPECT_LE(double(marked_lit), 0.02 * double(marked));
+}
+
+TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
+    // Epsilon 0.01 leaves the closed-form quadtree partly refined (22 maps), where the three
+    // weightings differ. Area weights integrate the bilinear interpolant of the samples.
+    const auto truth = render("closed_form.json", reference(32)).visibility;
+    double mae[3];
+    const char* names[3] = {"area", "paper", "equal"};
+    for (int i = 0; i < 3; ++i) {
+        auto r =
+            render("closed_form.json",
+                   adaptive(std::string(R"(, "epsilon": 0.01, "weights": ")") + names[i] + "\""));
+        mae[i] = shadowMae(r.visibility, truth);
+        std::printf("weights %s: MAE %.5f with %d maps\n", names[i], mae[i],
+                    r.stats.value("maps_rendered", 0));
+    }
+    // Measured 0.042 (area), 0.083 (paper), 0.057 (equal): on this partial refinement the
+    // paper's depth weights overweight the coarse corners; area weights are clearly best.
+    EXPECT_LT(mae[0], mae[1]);
+    EXPECT_LT(mae[0], mae[2]);
+}
+
+TEST(AdaptiveGL, PcfSoftensTheEvaluation) {
+    auto sharp = render("closed_form.json", adaptive(R"(, "epsilon": 1)"));
+    auto soft = render("closed_form.json", adaptive(R"(, "epsilon": 1, "pcf": 5)"));
+    // Four corner maps alone give visibility in steps of 1/4; a 5 x 5 kernel fills between.
+    auto partial = [](const std::vector<float>& v) {
+        long n = 0;
+        for (float x : v) {
+            const float steps = x * 4.0f;
+            n += std::fabs(steps - std::round(steps)) > 0.01f;
+        }
+        return n;
+    };
+    EXPECT_EQ(partial(sharp.visibility), 0);
+    EXPECT_GT(partial(soft.visibility), 50);
+}
+
+TEST(AdaptiveGL, ClosedFormMatchesReferenceWithFewMaps) {
+    checkAgainstReference("closed_form.json");
+}
+
+TEST(AdaptiveGL, DefaultSceneMatchesReferenceWithFewMaps) {
+    checkAgainstReference("adaptive_default.json");
+}
+
+TEST(AdaptiveGL, ErrorFallsAsEpsilonFalls) {
+    const auto truth = render("closed_form.json", reference(32)).visibility;
+    double last = 1e9;
+    int last_maps = 0;
+    for (const char* eps : {"0.05", "0.01", "0.003", "0.0"}) {
+        auto r = render("closed_form.json", adaptive(std::string(R"(, "epsilon": )") + eps));
+        const double mae = shadowMae(r.visibility, truth);
+        const int maps = r.stats.value("maps_rendered", 0);
+        std::printf("epsilon %s: MAE %.5f with %d maps\n", eps, mae, maps);
+        EXPECT_LE(mae, last);  // the same jittered lattice, refined further: never worse here
+        EXPECT_GE(maps, last_maps);
+        last = mae;
+        last_maps = maps;
+    }
+    EXPECT_EQ(last_maps, 81);  // epsilon 0: the full 9 x 9 grid of max_depth 3
+}
+
+TEST(AdaptiveGL, AccumulationPathMatchesTextureArrayPath) {
+    // Both evaluate sum_k w_k lit_k / sum_k w_k; the accumulation buffer normalises at the end.
+    const std::string opts = R"(, "weights": "paper")";
+    auto array = render("closed_form.json", adaptive(opts));
+    auto accum = render("closed_form.json", adaptive(opts + R"(, "evaluation": "accumulate")"));
+    EXPECT_EQ(array.stats.value("maps_rendered", 0), accum.stats.value("maps_rendered", 0));
+    double max = 0;
+    for (size_t i = 0; i < array.visibility.size(); ++i)
+        max = std::max(max, double(std::fabs(array.visibility[i] - accum.visibility[i])));
+    // Float sums in a different order and one extra multiply: a few ulps of 1.
+    EXPECT_LE(max, 1e-5);
+}
+
+TEST(AdaptiveGL, RelativeGammaRefinesLikeAbsolute) {
+    // Depths are normalised to [0,1] with casters near the middle, so eq. 7 with gamma 0.02
+    // flags roughly the pixels eq. 3 with gamma 0.01 does; both must refine the penumbra.
+    auto r = render("closed_form.json", adaptive(R"(, "gamma_mode": "relative", "gamma": 0.02)"));
+    EXPECT_GE(r.stats.value("depth_reached", 0), 2);
+    EXPECT_GT(r.stats.value("comparisons", 0), 2);
+}
+
+TEST(AdaptiveGL, LinearLightSubdividesIn1D) {
+    // A light of (nearly: the scene format rejects 0) zero height: samples at the two ends,
+    // one comparison per segment, halving; subdivision "linear" forces the same on any light.
+    auto r = render("closed_form.json", adaptive(R"(, "epsilon": 0)"),
+                    {{"lights.0.size", "[1, 0.0005]"}});
+    EXPECT_EQ(r.stats.value("maps_rendered", 0), 9);  // 2^3 + 1 points at max_depth 3
+    EXPECT_EQ(r.stats.value("comparisons", 0), 7);    // 1 + 2 + 4 segments
+    auto forced =
+        render("closed_form.json", adaptive(R"(, "epsilon": 0, "subdivision": "linear")"));
+    EXPECT_EQ(forced.stats.value("maps_rendered", 0), 9);
+}
+
+TEST(AdaptiveGL, TileMetricRefinesASmallShadowTheGlobalOneMisses) {
+    // The shadow covers about 1 % of the frame: the paper's global metric (5.1) sees too few
+    // disagreeing pixels and stops at the corners; the tile metric refines where it is.
+    const std::string scene = "adaptive_small_shadow.json";
+    const auto truth = render(scene, reference(32)).visibility;
+    auto global = render(scene, adaptive());
+    auto tile = render(scene, adaptive(R"(, "metric": "tile")"));
+    const double mae_global = shadowMae(global.visibility, truth, 100);
+    const double mae_tile = shadowMae(tile.visibility, truth, 100);
+    std::printf(
+        "small shadow: global metric MAE %.5f with %d maps, tile metric MAE %.5f with %d "
+        "maps\n",
+        mae_global, global.stats.value("maps_rendered", 0), mae_tile,
+        tile.stats.value("maps_rendered", 0));
+    EXPECT_EQ(global.stats.value("maps_rendered", 0), 4);
+    EXPECT_GT(tile.stats.value("maps_rendered", 0), 4);
+    EXPECT_LT(mae_tile, 0.5 * mae_global);
+}
+
+TEST(AdaptiveGL, LightCentreReprojectionIsViewIndependent) {
+    // Section 4.1: comparisons in a view from the light's centre do not depend on the camera,
+    // so two cameras get the same refinement; the shadow still matches the reference.
+    const std::string opts = R"(, "reprojection": "light_centre")";
+    auto a = render("closed_form.json", adaptive(opts));
+    auto b = render("closed_form.json", adaptive(opts), {{"camera.position", "[1.5, 3.5, 2.0]"}});
+    EXPECT_EQ(a.stats.value("maps_rendered", 0), b.stats.value("maps_rendered", 0));
+    EXPECT_EQ(a.stats.value("comparisons", 0), b.stats.value("comparisons", 0));
+    EXPECT_GT(a.stats.value("maps_rendered", 0), 4);
+    const auto truth = render("closed_form.json", reference(32)).visibility;
+    const double mae = shadowMae(a.visibility, truth);
+    const double ref4 = shadowMae(render("closed_form.json", reference(4)).visibility, truth);
+    std::printf("light-centre reprojection: MAE %.5f with %d maps; reference N=4 MAE %.5f\n", mae,
+                a.stats.value("maps_rendered", 0), ref4);
+    // No accuracy bar of the paper's for this mode: it refines where the light, not the camera,
+    // sees disagreement; require it to beat the 16 maps of reference N = 4.
+    EXPECT_LE(mae, ref4);
+}
+
+TEST(AdaptiveGL, ShadowTestComparisonRefinesWhereShadowsDiffer) {
+    // Comparing hard-test results ignores depth differences that change no shadow (a caster
+    // seen at two depths by both maps), so it refines at most where depths do. Measured at
+    // epsilon 0.01: equal on the closed form (22 maps); on the default scene 14 maps (MAE 0.045)
+    // against 75 (0.011), as depth differences over the casters themselves no longer count.
+    for (const char* scene : {"closed_form.json", "adaptive_default.json"}) {
+        const auto truth = render(scene, reference(32)).visibility;
+        auto depth = render(scene, adaptive(R"(, "epsilon": 0.01)"));
+        auto tests = render(scene, adaptive(R"(, "epsilon": 0.01, "compare": "shadow_test")"));
+        const double mae_depth = shadowMae(depth.visibility, truth);
+        const double mae_tests = shadowMae(tests.visibility, truth);
+        std::printf(
+            "%s: depth comparison MAE %.5f with %d maps, %d comparisons; shadow-test "
+            "comparison MAE %.5f with %d maps, %d comparisons\n",
+            scene, mae_depth, depth.stats.value("maps_rendered", 0),
+            depth.stats.value("comparisons", 0), mae_tests, tests.stats.value("maps_rendered", 0),
+            tests.stats.value("comparisons", 0));
+        EXPECT_GT(tests.stats.value("maps_rendered", 0), 4);
+        EXPECT_LE(tests.stats.value("maps_rendered", 0), depth.stats.value("maps_rendered", 0));
+    }
+}
