@@ -187,9 +187,7 @@ TEST(AdaptiveGL, AccumulationPathMatchesTextureArrayPath) {
     auto array = render("closed_form.json", adaptive(opts));
     auto accum = render("closed_form.json", adaptive(opts + R"(, "evaluation": "accumulate")"));
     EXPECT_EQ(array.stats.value("maps_rendered", 0), accum.stats.value("maps_rendered", 0));
-    double max = 0;
-    for (size_t i = 0; i < array.visibility.size(); ++i)
-        max = std::max(max, double(std::fabs(array.visibility[i] - accum.visibility[i])));
+    const double max = penumbra::testing::maxAbsDifference(array.visibility, accum.visibility);
     // Float sums in a different order and one extra multiply: a few ulps of 1.
     EXPECT_LE(max, 1e-5);
 }

@@ -1,13 +1,18 @@
 // The GL test environment: see gl_test_env.h.
 #include "gl_test_env.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "renderer/gl/debug.h"
 #include "renderer/render/frame_renderer.h"
 #include "renderer/techniques/technique.h"
 
 // Under AddressSanitizer, leak checking is off for the GL tests: Mesa's drivers keep
 // process-lifetime allocations whose stacks cannot be unwound (the unit tests keep it on).
-extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
+extern "C" const char* __asan_default_options() {
+    return "detect_leaks=0";
+}
 
 namespace penumbra::testing {
 namespace {
@@ -43,6 +48,13 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
     output::Image image = renderer.readImage();
     gl::checkErrors(name);  // no GL error after any render
     return image;
+}
+
+double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    if (a.size() != b.size()) throw std::runtime_error("maxAbsDifference: sizes differ");
+    double max = 0;
+    for (size_t i = 0; i < a.size(); ++i) max = std::max(max, double(std::fabs(a[i] - b[i])));
+    return max;
 }
 
 const std::vector<float>& channel(const output::Image& image, const std::string& name) {

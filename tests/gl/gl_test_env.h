@@ -21,6 +21,9 @@ const gl::ContextInfo& glInfo();
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
                           int frame = 0);
 
+// The largest |a[i] - b[i]| of two equally long channels.
+double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
+
 // Values of channel NAME, which must exist.
 const std::vector<float>& channel(const output::Image& image, const std::string& name);
 

@@ -61,8 +61,7 @@ TEST(ReferenceGL, BatchSizeDoesNotChangeTheImage) {
     auto b = renderScene("closed_form.json", {{"technique.batch", "7"}});
     const auto& va = channel(a, "visibility");
     const auto& vb = channel(b, "visibility");
-    double max = 0;
-    for (size_t i = 0; i < va.size(); ++i) max = std::max(max, double(std::fabs(va[i] - vb[i])));
+    const double max = penumbra::testing::maxAbsDifference(va, vb);
     // Float sums in a different order: a few ulps of 1.
     EXPECT_LE(max, 1e-5);
 }

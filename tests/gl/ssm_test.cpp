@@ -135,8 +135,7 @@ TEST(SsmGL, CpuPathEqualsGpuPath) {
                     {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64, "path": "cpu")")}});
     const auto& vg = channel(gpu, "visibility");
     const auto& vc = channel(cpu, "visibility");
-    double max = 0;
-    for (size_t i = 0; i < vg.size(); ++i) max = std::max(max, double(std::fabs(vg[i] - vc[i])));
+    const double max = penumbra::testing::maxAbsDifference(vg, vc);
     // The same micro-patches in the same order, blended in an order the rasteriser may change:
     // float sums of up to a few thousand terms differ by a few ulps of 1.
     EXPECT_LE(max, 1e-5);
@@ -150,8 +149,7 @@ TEST(SsmGL, TwoSidedEqualsOneSidedForAFlatOccluder) {
                     {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64, "two_sided": true)")}});
     const auto& v1 = channel(one, "visibility");
     const auto& v2 = channel(two, "visibility");
-    double max = 0;
-    for (size_t i = 0; i < v1.size(); ++i) max = std::max(max, double(std::fabs(v1[i] - v2[i])));
+    const double max = penumbra::testing::maxAbsDifference(v1, v2);
     // A plane's nearest and farthest surfaces are the same texels at the same depths.
     EXPECT_LE(max, 1e-5);
 }
@@ -218,8 +216,7 @@ TEST(SsmGL, ClippingToReceiversKeepsTheImage) {
     auto clipped = with("true"), full = with("false");
     const auto& vc = channel(clipped, "visibility");
     const auto& vf = channel(full, "visibility");
-    double max = 0;
-    for (size_t i = 0; i < vc.size(); ++i) max = std::max(max, double(std::fabs(vc[i] - vf[i])));
+    const double max = penumbra::testing::maxAbsDifference(vc, vf);
     // Clipping drops only texels beyond every receiver's penumbra, whose coverage is zero up to
     // the rounding of 1/z_O - 1/z_R at the quad's border (about 1e-6 measured).
     EXPECT_LE(max, 1e-5);
