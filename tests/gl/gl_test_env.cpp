@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/core/light_geometry.h"
 #include "renderer/gl/debug.h"
 #include "renderer/render/frame_renderer.h"
 #include "renderer/techniques/technique.h"
@@ -48,6 +49,26 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
     output::Image image = renderer.readImage();
     gl::checkErrors(name);  // no GL error after any render
     return image;
+}
+
+double closedFormShadowMae(const output::Image& img, double light_half, long min_pixels) {
+    const auto& vis = channel(img, "visibility");
+    const auto& id = channel(img, "id");
+    const auto& px = channel(img, "P.X");
+    const auto& py = channel(img, "P.Y");
+    const auto& pz = channel(img, "P.Z");
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < vis.size(); ++i) {
+        if (id[i] != 0.0f) continue;  // floor only
+        const double expected = parallelSquareOccluderVisibility(
+            {0, 3, 0}, light_half, {0.2, 1.5, 0.1}, 0.4, {px[i], py[i], pz[i]});
+        if (expected >= 0.999 && vis[i] >= 0.999f) continue;
+        sum += std::fabs(expected - vis[i]);
+        ++n;
+    }
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the floor";
+    return n ? sum / static_cast<double>(n) : 1.0;
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

@@ -21,6 +21,12 @@ const gl::ContextInfo& glInfo();
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
                           int frame = 0);
 
+// Shadow-region MAE (Atty et al. 5.2.1) of IMG's visibility against the closed form of
+// closed_form.json (a 0.8 m square occluder at (0.2, 1.5, 0.1) parallel to a square light of half
+// size LIGHT_HALF at y = 3), over floor pixels (id 0) where either is below 0.999. Expects at
+// more than MIN_PIXELS such pixels.
+double closedFormShadowMae(const output::Image& img, double light_half, long min_pixels);
+
 // The largest |a[i] - b[i]| of two equally long channels.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
 
