@@ -105,7 +105,8 @@ TEST(AdaptiveGL, MapBudgetStopsRefinement) {
 }
 
 TEST(AdaptiveGL, DepthDiagnosticMarksThePenumbra) {
-    auto r = render("closed_form.json", adaptive());
+    // Stride 1: with a stride, a comparison pixel marks its whole block, past the edge.
+    auto r = render("closed_form.json", adaptive(R"(, "compare_stride": 1)"));
     ASSERT_EQ(r.depth.size(), r.visibility.size());
     long marked = 0, marked_lit = 0;
     for (size_t i = 0; i < r.depth.size(); ++i) {
@@ -118,6 +119,23 @@ TEST(AdaptiveGL, DepthDiagnosticMarksThePenumbra) {
     // allowance because the comparison projects the receiver itself while the shadow test
     // projects it offset along its normal, which moves the outer penumbra edge by a texel.
     EXPECT_LE(double(marked_lit), 0.02 * double(marked));
+}
+
+TEST(AdaptiveGL, CompareStrideEstimatesTheFullCount) {
+    // Epsilon 0.01 leaves the tree partly refined, so the counts decide. Every 2nd pixel
+    // along x and y, counted 4 times, must refine the same cells as every pixel; stride 4
+    // (1/16 of the pixels) within 4 maps of it: counts near epsilon may round either way.
+    int maps[3];
+    const int strides[3] = {1, 2, 4};
+    for (int i = 0; i < 3; ++i)
+        maps[i] = render("closed_form.json", adaptive(R"(, "epsilon": 0.01, "compare_stride": )" +
+                                                      std::to_string(strides[i])))
+                      .stats.value("maps_rendered", 0);
+    std::printf("maps with compare stride 1, 2, 4: %d, %d, %d\n", maps[0], maps[1], maps[2]);
+    EXPECT_GT(maps[0], 9);   // partly refined: more than depth 1's 9 maps
+    EXPECT_LT(maps[0], 81);  // and less than the full depth-3 grid
+    EXPECT_EQ(maps[1], maps[0]);
+    EXPECT_NEAR(maps[2], maps[0], 4);
 }
 
 TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {

@@ -1,6 +1,7 @@
 #version 450 core
 // `adaptive`: compares two light-sample shadow maps over a G-buffer (Schwärzler 2009, eq. 3
-// or 7). Agreeing pixels are discarded, so an occlusion query counts the disagreeing ones.
+// or 7) at every u_stride-th G-buffer pixel in x and y. Agreeing pixels are discarded, so an
+// occlusion query counts the disagreeing ones.
 #include "common/sample_view.glsl"
 
 layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
@@ -29,12 +30,12 @@ uniform int u_tile_size;  // pixels per tile side, 0: no tile counts
 uniform int u_tiles_x;
 uniform int u_tile_slot;  // this comparison's first counter: slot * tile count
 uniform int u_level;      // quadtree depth of the comparison, written (+1) to the diagnostic
+uniform int u_stride;     // G-buffer pixels per comparison pixel along x and y
 uniform vec3 u_light_right;
 uniform vec3 u_light_up;
 uniform vec3 u_light_forward;
 
-layout(location = 0) out vec4 o_visibility;  // masked off by the host
-layout(location = 1) out vec4 o_depth;
+layout(location = 0) out vec4 o_level;  // max-blended: the deepest disagreement here, + 1
 
 // The stored caster depth that view K sees along the ray to receiver Q (light frame); 1 (the
 // far plane) where no caster projects.
@@ -61,12 +62,15 @@ bool lit(int k, vec3 q) {
 }
 
 void main() {
-    vec4 pos = texelFetch(u_position, ivec2(gl_FragCoord.xy), 0);
+    // The centre pixel of this comparison pixel's u_stride x u_stride block.
+    ivec2 pixel = min(ivec2(gl_FragCoord.xy) * u_stride + u_stride / 2,
+                      textureSize(u_position, 0) - 1);
+    vec4 pos = texelFetch(u_position, pixel, 0);
     if (pos.w == 0.0) discard;
     vec3 q = vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up),
                   dot(pos.xyz, u_light_forward));
     if (u_tests != 0) {
-        vec3 n = normalize(texelFetch(u_normal, ivec2(gl_FragCoord.xy), 0).xyz);
+        vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
         float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
         vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_a].params.y * dist);
         vec3 qo = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
@@ -78,9 +82,8 @@ void main() {
         if (diff < u_gamma) discard;
     }
     if (u_tile_size > 0) {
-        ivec2 tile = ivec2(gl_FragCoord.xy) / u_tile_size;
+        ivec2 tile = pixel / u_tile_size;
         atomicAdd(u_tile_counts[u_tile_slot + tile.y * u_tiles_x + tile.x], 1u);
     }
-    o_visibility = vec4(0.0);
-    o_depth = vec4(float(u_level + 1), 0.0, 0.0, 0.0);
+    o_level = vec4(float(u_level + 1), 0.0, 0.0, 0.0);
 }

@@ -39,6 +39,9 @@ constexpr std::array kAdaptiveParams = {
                "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
     enumParam("metric_area", "map", "map|screen",
               "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
+    intParam("compare_stride", 2, 1, 8,
+             "compare at every k-th pixel along x and y of the comparison view, counting each "
+             "disagreement as k^2 pixels (1: every pixel, as the paper)"),
     intParam("max_depth", 3, 0, 8, "deepest quadtree level"),
     intParam("max_maps", 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
     enumParam("subdivision", "auto", "auto|quad|linear",
@@ -89,6 +92,7 @@ public:
         compare_.normal_offset = settings_.test.normal_offset;
         compare_.depth_bias = settings_.test.depth_bias;
         if (p.getString("metric") == "tile") compare_.tile_size = p.getInt("tile_size");
+        compare_.stride = p.getInt("compare_stride");
         settings_.test.pcf = p.getInt("pcf");
         if (accumulate_path_ && weighting_ == adaptive::LightQuadtree::Weighting::Area)
             throw RuntimeError(
@@ -105,14 +109,8 @@ public:
             settings_.map_size, std::min(kScratchLayers, max_maps_), gl.has_vertex_layer);
         accumulate_ = std::make_unique<passes::ShadowAccumulate>();
         map_compare_ = std::make_unique<adaptive::MapCompare>();
-        if (light_centre_) {
-            const int size = settings_.map_size;
-            light_view_ = std::make_unique<passes::GBuffer>(size, size);
-            // Comparisons there write no diagnostic: a framebuffer without attachments.
-            light_view_fbo_ = gl::createFramebuffer("adaptive light-centre comparisons");
-            glNamedFramebufferParameteri(light_view_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, size);
-            glNamedFramebufferParameteri(light_view_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, size);
-        }
+        if (light_centre_)
+            light_view_ = std::make_unique<passes::GBuffer>(settings_.map_size, settings_.map_size);
     }
 
     std::vector<DiagnosticChannel> diagnostics() const override {
@@ -138,6 +136,7 @@ public:
         const double area = screen_metric_
                                 ? double(receivers.width()) * double(receivers.height())
                                 : double(settings_.map_size) * double(settings_.map_size);
+        map_compare_->clearLevels();
         std::vector<adaptive::QuadtreeCell> cells{tree.root()};
         int comparisons = 0, level = 0;
         bool budget_hit = false;
@@ -149,12 +148,6 @@ public:
             int queued = 0;
             for (const auto& c : cells) queued += int(tree.comparisons(c).size());
             ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
-                if (light_centre_) {
-                    glBindFramebuffer(GL_FRAMEBUFFER, light_view_fbo_.id());
-                    glViewport(0, 0, receivers.width(), receivers.height());
-                } else {
-                    ctx.bindOutput();
-                }
                 map_compare_->begin(receivers, *maps_, light, compare_, queued);
                 for (const auto& c : cells)
                     for (auto [a, b] : tree.comparisons(c)) map_compare_->compare(a, b, level);
@@ -162,6 +155,13 @@ public:
             });
             comparisons += static_cast<int>(counts.size());
             cells = splitCells(tree, cells, counts, area, budget_hit);
+        }
+        // The diagnostic: where comparisons in the camera view disagreed, and how deep.
+        if (!light_centre_ && comparisons > 0) {
+            ctx.bindOutput();
+            GLint output = 0;
+            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &output);
+            map_compare_->writeLevels(GLuint(output));
         }
 
         const int n = static_cast<int>(views_.size());
@@ -219,10 +219,10 @@ private:
             bool split = false;
             for (size_t k = 0; k < tree.comparisons(cells[i]).size(); ++k, ++q) {
                 const auto& r = counts[q];
-                worst = std::max(worst, double(r.pixels));
+                worst = std::max(worst, r.pixels);
                 split |= compare_.tile_size > 0
-                             ? r.max_tile > 0 && double(r.max_tile) / tile_area >= tile_epsilon_
-                             : r.pixels > 0 && double(r.pixels) / area >= epsilon_;
+                             ? r.max_tile > 0 && r.max_tile / tile_area >= tile_epsilon_
+                             : r.pixels > 0 && r.pixels / area >= epsilon_;
             }
             if (split) refine.push_back({worst, i});
         }
@@ -342,7 +342,6 @@ private:
     std::unique_ptr<passes::ShadowAccumulate> accumulate_;
     std::unique_ptr<adaptive::MapCompare> map_compare_;
     std::unique_ptr<passes::GBuffer> light_view_;  // receivers seen from the light's centre
-    gl::Framebuffer light_view_fbo_;
     passes::SampleViewBuffer views_buffer_;
     std::vector<passes::SampleView> views_;
 };

@@ -29,6 +29,19 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
                        const scene::RectLight& light, const CompareSettings& s, int count) {
     used_ = 0;
     tiles_ = 0;
+    stride_ = std::max(s.stride, 1);
+    const int w = (gbuffer.width() + stride_ - 1) / stride_;
+    const int h = (gbuffer.height() + stride_ - 1) / stride_;
+    if (w != width_ || h != height_ || !levels_.id()) {
+        levels_ = gl::createTexture2D(GL_R32F, w, h, "adaptive comparison levels");
+        fbo_ = gl::createFramebuffer("adaptive comparisons");
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, levels_.id(), 0);
+        width_ = w;
+        height_ = h;
+        clearLevels();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, w, h);
     if (s.tile_size > 0) {
         const int tx = (gbuffer.width() + s.tile_size - 1) / s.tile_size;
         const int ty = (gbuffer.height() + s.tile_size - 1) / s.tile_size;
@@ -52,6 +65,7 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
     glBindTextureUnit(2, maps.depth().id());
     glBindSampler(2, sampler_);
     gl::setUniform(program_, "u_tile_size", tiles_ > 0 ? s.tile_size : 0);
+    gl::setUniform(program_, "u_stride", stride_);
     gl::setUniform(program_, "u_gamma", s.gamma);
     gl::setUniform(program_, "u_relative", s.relative ? 1 : 0);
     gl::setUniform(program_, "u_tests", s.tests ? 1 : 0);
@@ -62,10 +76,9 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
     gl::setUniform(program_, "u_light_up", light.upAxis());
     gl::setUniform(program_, "u_light_forward", light.forward());
     glDisable(GL_DEPTH_TEST);
-    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_BLEND);
-    glBlendEquationi(1, GL_MAX);
-    glBlendFunci(1, GL_ONE, GL_ONE);
+    glBlendEquation(GL_MAX);
+    glBlendFunc(GL_ONE, GL_ONE);
 }
 
 void MapCompare::compare(int a, int b, int level) {
@@ -82,16 +95,16 @@ void MapCompare::compare(int a, int b, int level) {
 }
 
 std::vector<CompareResult> MapCompare::end() {
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glBindSampler(2, 0);
     glUseProgram(0);
+    const double scale = double(stride_) * double(stride_);
     std::vector<CompareResult> out(static_cast<size_t>(used_));
     for (int i = 0; i < used_; ++i) {
         GLuint v = 0;
         glGetQueryObjectuiv(queries_[static_cast<size_t>(i)].id(), GL_QUERY_RESULT, &v);
-        out[size_t(i)].pixels = v;
+        out[size_t(i)].pixels = double(v) * scale;
     }
     if (tiles_ > 0 && used_ > 0) {
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -100,10 +113,28 @@ std::vector<CompareResult> MapCompare::end() {
                                 counts.data());
         for (size_t i = 0; i < counts.size(); ++i) {
             auto& r = out[i / size_t(tiles_)];
-            r.max_tile = std::max(r.max_tile, counts[i]);
+            r.max_tile = std::max(r.max_tile, double(counts[i]) * scale);
         }
     }
     return out;
+}
+
+void MapCompare::writeLevels(GLuint dst) const {
+    const GLenum only[2] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(dst, 2, only);
+    glNamedFramebufferReadBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+    // Nearest scaling by the stride: each comparison pixel covers its block (the edge blocks
+    // of a size that is no multiple of the stride spill past the image and are clipped).
+    glBlitNamedFramebuffer(fbo_.id(), dst, 0, 0, width_, height_, 0, 0, width_ * stride_,
+                           height_ * stride_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const GLenum all[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(dst, 2, all);
+}
+
+void MapCompare::clearLevels() {
+    if (!levels_.id()) return;  // begin() creates them cleared
+    const float zero = 0.0f;
+    glClearTexImage(levels_.id(), 0, GL_RED, GL_FLOAT, &zero);
 }
 
 }  // namespace penumbra::techniques::adaptive

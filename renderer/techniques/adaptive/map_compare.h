@@ -21,12 +21,14 @@ struct CompareSettings {
     float normal_offset = 1.5f;  // of the hard tests, as in passes::ShadowTestSettings
     float depth_bias = 0.0005f;
     int tile_size = 0;  // > 0: also count disagreeing pixels per screen tile of this side
+    int stride = 1;     // compare every stride-th G-buffer pixel along x and y; counts x stride^2
 };
 
 // What one comparison found.
+// With a stride, counts are estimates: compared pixels x stride^2.
 struct CompareResult {
-    unsigned pixels = 0;    // disagreeing pixels in the frame (the occlusion query)
-    unsigned max_tile = 0;  // most disagreeing pixels in one tile (0 without tiles)
+    double pixels = 0;    // disagreeing pixels in the frame (the occlusion query)
+    double max_tile = 0;  // most disagreeing pixels in one tile (0 without tiles)
 };
 
 class MapCompare {
@@ -37,20 +39,28 @@ public:
     MapCompare& operator=(const MapCompare&) = delete;
 
     // Sets up state for a series of at most COUNT comparisons of views in MAPS (layer = view
-    // index, views bound at kBindingSampleViews/kBindingSampleLookups) over GBUFFER. The
-    // caller has bound the output framebuffer; colour 0 is masked off, colour 1 gets
-    // max(level + 1).
+    // index, views bound at kBindingSampleViews/kBindingSampleLookups) over GBUFFER, drawn
+    // into this object's framebuffer of GBUFFER's size / stride.
     void begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& maps,
                const scene::RectLight& light, const CompareSettings& settings, int count);
     // Queues the comparison of views A and B.
     void compare(int a, int b, int level);
     // Restores state; the results of this series, in compare() order (blocking).
     std::vector<CompareResult> end();
+    // Writes max(level + 1) of the disagreements of every series since the last
+    // clearLevels(), scaled up by the stride, into colour 1 of framebuffer DST (whose draw
+    // buffers are colours 0 and 1).
+    void writeLevels(GLuint dst) const;
+    // Zeroes the levels (begin() keeps them, so the series of one light accumulate).
+    void clearLevels();
 
 private:
     gl::Program program_;
     passes::Fullscreen fullscreen_;
-    unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
+    gl::Texture levels_;  // R32F, the G-buffer's size / stride
+    gl::Framebuffer fbo_;
+    int width_ = 0, height_ = 0, stride_ = 1;  // of levels_
+    unsigned sampler_ = 0;                     // nearest, no depth compare: raw depths of the maps
     std::vector<gl::Query> queries_;
     int used_ = 0;
     int tiles_ = 0;  // tiles per comparison, 0: no tile counts this series
