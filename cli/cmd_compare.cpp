@@ -34,6 +34,8 @@ options:
   --warnpercent P    % of pixels allowed to warn (default 0)
   --hardfail A       any difference above A fails outright (default: none)
   --channels C,C,..  channels to compare, e.g. R,G,B or visibility (default: all of REF's)
+  --ids N,N,..       compare only pixels whose `id` in REF (the object's index in the scene's
+                     `objects`) is listed, e.g. the receivers; counts and means are over them
   --diff OUT.exr     write |REF - TEST| of the compared channels (written even on failure)
   --json             print only a JSON object with every metric on stdout
   --help             print this help
@@ -62,21 +64,24 @@ double parsePercent(const ArgCursor& c, std::string_view flag, const std::string
     return v;
 }
 
-std::vector<std::string> parseChannels(const ArgCursor& c, const std::string& text) {
-    std::vector<std::string> names;
+// The comma-separated items of FLAG's TEXT, each non-empty and listed once; WHAT names one.
+std::vector<std::string> parseList(const ArgCursor& c, const std::string& flag,
+                                   const std::string& what, const std::string& text) {
+    std::vector<std::string> items;
     std::set<std::string> seen;
     size_t start = 0;
     while (true) {
         const size_t comma = text.find(',', start);
-        std::string name =
+        std::string item =
             text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        if (name.empty()) c.fail("--channels: empty channel name in '" + text + "'");
-        if (!seen.insert(name).second) c.fail("--channels: channel '" + name + "' is listed twice");
-        names.push_back(std::move(name));
+        if (item.empty()) c.fail(flag + ": empty " + what + " in '" + text + "'");
+        if (!seen.insert(item).second)
+            c.fail(flag + ": " + what + " '" + item + "' is listed twice");
+        items.push_back(std::move(item));
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
-    return names;
+    return items;
 }
 
 CompareArgs parseArgs(const Args& args) {
@@ -96,7 +101,11 @@ CompareArgs parseArgs(const Args& args) {
         } else if ((v = c.option("-hardfail", "--hardfail"))) {
             a.options.hard_fail = parseThreshold(c, "--hardfail", *v);
         } else if ((v = c.option("", "--channels"))) {
-            a.options.channels = parseChannels(c, *v);
+            a.options.channels = parseList(c, "--channels", "channel name", *v);
+        } else if ((v = c.option("", "--ids"))) {
+            a.options.ids.clear();
+            for (const auto& id : parseList(c, "--ids", "object index", *v))
+                a.options.ids.push_back(parseInt(c, "--ids", id, 0, 1 << 30));
         } else if ((v = c.option("", "--diff"))) {
             if (v->empty()) c.fail("--diff: expected a file name");
             a.diff = *v;
@@ -123,11 +132,13 @@ std::string formatValue(double v) {
 }
 
 void printSummary(const CompareArgs& a, const output::CompareResult& r) {
-    const long pixels = static_cast<long>(r.width) * r.height;
+    const long pixels = r.pixels;
     std::string channels;
     for (const auto& name : r.channels) channels += (channels.empty() ? "" : ",") + name;
     std::printf("Comparing \"%s\" and \"%s\" (%dx%d, channels %s)\n", a.ref.c_str(), a.test.c_str(),
                 r.width, r.height, channels.c_str());
+    if (!r.options.ids.empty())
+        std::printf("  %ld pixels of the objects listed by --ids\n", r.pixels);
     std::printf("  Mean error = %s\n", formatValue(r.mae).c_str());
     std::printf("  RMS error = %s\n", formatValue(r.rmse).c_str());
     std::printf("  Max error = %s @ (%d, %d, %s)\n", formatValue(r.max).c_str(), r.max_x, r.max_y,

@@ -43,6 +43,24 @@ std::vector<ChannelPair> selectChannels(const Image& ref, const Image& test,
     return pairs;
 }
 
+// 1 for each pixel that options.ids selects (all without ids); throws CompareMismatch when
+// ids are given and REF has no `id` channel.
+std::vector<uint8_t> selectPixels(const Image& ref, const CompareOptions& options, size_t pixels) {
+    if (options.ids.empty()) return std::vector<uint8_t>(pixels, 1);
+    const ImageChannel* id = ref.find("id");
+    if (!id)
+        throw CompareMismatch(CompareMismatch::Side::Reference,
+                              "reference has no channel 'id' (needed by --ids)");
+    std::vector<uint8_t> mask(pixels, 0);
+    for (size_t i = 0; i < pixels; ++i) {
+        const float v = id->pixels[i];
+        if (!std::isfinite(v)) continue;
+        mask[i] =
+            std::find(options.ids.begin(), options.ids.end(), std::lround(v)) != options.ids.end();
+    }
+    return mask;
+}
+
 // |a - b|, infinite when either is NaN or inf.
 double absoluteDifference(float a, float b) {
     if (!std::isfinite(a) || !std::isfinite(b)) return kInfinity;
@@ -69,13 +87,15 @@ nlohmann::json optionalJson(const std::optional<T>& value) {
     return value ? number(static_cast<double>(*value)) : nlohmann::json(nullptr);
 }
 
-void shadowRegion(const Image& ref, const Image& test, CompareResult& result) {
+void shadowRegion(const Image& ref, const Image& test, const std::vector<uint8_t>& mask,
+                  CompareResult& result) {
     const ImageChannel* r = ref.find("visibility");
     const ImageChannel* t = test.find("visibility");
     if (!r || !t) return;
     double sum = 0;
     long count = 0;
     for (size_t i = 0; i < r->pixels.size(); ++i) {
+        if (!mask[i]) continue;
         const float a = r->pixels[i], b = t->pixels[i];
         if (!std::isfinite(a) || !std::isfinite(b)) continue;
         if (a < kShadowVisibility || b < kShadowVisibility) {
@@ -109,6 +129,8 @@ CompareResult compareImages(const Image& ref, const Image& test, const CompareOp
     result.height = ref.height;
     const size_t width = static_cast<size_t>(std::max(ref.width, 0));
     const size_t pixels = width * static_cast<size_t>(std::max(ref.height, 0));
+    const std::vector<uint8_t> mask = selectPixels(ref, options, pixels);
+    result.pixels = std::count(mask.begin(), mask.end(), uint8_t(1));
 
     enum : uint8_t { kFailed = 1, kWarned = 2 };
     std::vector<uint8_t> flags(pixels, 0);
@@ -124,6 +146,7 @@ CompareResult compareImages(const Image& ref, const Image& test, const CompareOp
         blockStart.push_back(finite.size());
         double channelSum = 0, channelSquares = 0;
         for (size_t i = 0; i < pixels; ++i) {
+            if (!mask[i]) continue;
             const double d = absoluteDifference(pair.ref->pixels[i], pair.test->pixels[i]);
             if (d > options.fail) flags[i] |= kFailed;
             if (d > options.warn) flags[i] |= kWarned;
@@ -168,16 +191,14 @@ CompareResult compareImages(const Image& ref, const Image& test, const CompareOp
         result.fail_pixels += (f & kFailed) ? 1 : 0;
         result.warn_pixels += (f & kWarned) ? 1 : 0;
     }
-    if (pixels > 0) {
-        result.fail_fraction =
-            static_cast<double>(result.fail_pixels) / static_cast<double>(pixels);
-        result.warn_fraction =
-            static_cast<double>(result.warn_pixels) / static_cast<double>(pixels);
+    const double n = static_cast<double>(result.pixels);
+    if (result.pixels > 0) {
+        result.fail_fraction = static_cast<double>(result.fail_pixels) / n;
+        result.warn_fraction = static_cast<double>(result.warn_pixels) / n;
     }
-    shadowRegion(ref, test, result);
+    shadowRegion(ref, test, mask, result);
 
     // idiff's rule: more failing pixels than allowed, or any difference above hardfail.
-    const double n = static_cast<double>(pixels);
     if (static_cast<double>(result.fail_pixels) > options.fail_percent / 100.0 * n ||
         (options.hard_fail && result.max > *options.hard_fail))
         result.verdict = Verdict::Fail;
@@ -194,11 +215,14 @@ Image differenceImage(const Image& ref, const Image& test, const CompareOptions&
     diff.width = ref.width;
     diff.height = ref.height;
     diff.channels.reserve(pairs.size());
+    const std::vector<uint8_t> mask = selectPixels(
+        ref, options, size_t(std::max(ref.width, 0)) * size_t(std::max(ref.height, 0)));
     for (const auto& pair : pairs) {
         ImageChannel& c = diff.add(pair.ref->name, PixelType::Float);
         for (size_t i = 0; i < c.pixels.size(); ++i)
-            c.pixels[i] =
-                static_cast<float>(absoluteDifference(pair.ref->pixels[i], pair.test->pixels[i]));
+            c.pixels[i] = mask[i] ? static_cast<float>(absoluteDifference(pair.ref->pixels[i],
+                                                                          pair.test->pixels[i]))
+                                  : 0.0f;
     }
     return diff;
 }
@@ -218,6 +242,7 @@ nlohmann::json CompareResult::toJson() const {
         {"verdict", verdictName(verdict)},
         {"width", width},
         {"height", height},
+        {"pixels", pixels},
         {"channels", channels},
         {"mae", number(mae)},
         {"rmse", number(rmse)},

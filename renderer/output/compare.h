@@ -20,6 +20,9 @@ struct CompareOptions {
     double warn_percent = 0.0;
     std::optional<double> hard_fail;    // any difference above this fails outright
     std::vector<std::string> channels;  // empty: every channel of the reference
+    // Non-empty: only pixels whose reference `id` channel (object index) is one of these are
+    // compared; every count, fraction and mean is over them.
+    std::vector<int> ids;
 };
 
 enum class Verdict { Pass = 0, Warn = 1, Fail = 2 };
@@ -40,6 +43,7 @@ struct CompareResult {
     Verdict verdict = Verdict::Pass;
     CompareOptions options;  // the thresholds the verdict used
     int width = 0, height = 0;
+    long pixels = 0;                             // pixels compared: all, or those of options.ids
     std::vector<std::string> channels;           // the channels compared, in order
     double mae = 0, rmse = 0, max = 0, p99 = 0;  // over all compared channels and pixels
     int max_x = 0, max_y = 0;
@@ -47,9 +51,9 @@ struct CompareResult {
     long nonfinite = 0;        // compared samples with NaN or inf in either image
     long fail_pixels = 0;      // pixels with a channel differing by more than options.fail
     long warn_pixels = 0;      // ... by more than options.warn
-    double fail_fraction = 0;  // fail_pixels / (width * height)
+    double fail_fraction = 0;  // fail_pixels / pixels
     double warn_fraction = 0;
-    // Mean |ref - test| of `visibility` over pixels where either is below 0.999, and their
+    // Mean |ref - test| of `visibility` over compared pixels where either is below 0.999, and their
     // count. Both absent without a visibility channel in both images; shadow_mae is also absent
     // when no pixel is in shadow in either. Pixels with non-finite visibility are left out.
     std::optional<double> shadow_mae;

@@ -86,6 +86,8 @@ expect_in err.txt "a.exr"
 expect_in err.txt "visibility"
 run 3 a.exr same.exr --channels R,Z
 expect_in err.txt "'Z'"
+run 3 a.exr same.exr --ids 0  # --ids needs the reference's `id` channel
+expect_in err.txt "'id'"
 
 # --- 4: unreadable ---
 run 4 missing.exr a.exr
@@ -110,6 +112,10 @@ run 2 a.exr same.exr --hardfail
 expect_in err.txt "--hardfail"
 run 2 a.exr same.exr --channels R,,G
 expect_in err.txt "--channels"
+run 2 a.exr same.exr --ids 1,one
+expect_in err.txt "--ids"
+run 2 a.exr same.exr --ids 1,1
+expect_in err.txt "--ids"
 run 2 a.exr
 run 2 a.exr same.exr third.exr
 expect_in err.txt "third.exr"

@@ -41,6 +41,42 @@ CompareOptions thresholds(double fail, double failPercent, double warn, double w
 
 constexpr double kTol = 1e-6;  // the inputs are floats; the hand-computed values are exact
 
+TEST(Compare, IdsRestrictEveryMetricToTheListedObjects) {
+    // SmallPair with object ids 0 1 / 2 1: --ids 1 keeps pixels 1 and 3 (R 0 and 0.3, G 0.2
+    // and 0): MAE 0.5 / 4, max 0.3 at (1,1); both pixels fail at 0.15, so the fraction is 1.
+    SmallPair p;
+    p.ref.channels.push_back({"id", PixelType::Float, {0, 1, 2, 1}});
+    CompareOptions o = thresholds(0.15, 0, 0.05, 0);
+    o.channels = {"R", "G"};
+    o.ids = {1};
+    const CompareResult r = compareImages(p.ref, p.test, o);
+    EXPECT_EQ(r.pixels, 2);
+    EXPECT_NEAR(r.mae, 0.125, kTol);
+    EXPECT_NEAR(r.max, 0.3, kTol);
+    EXPECT_EQ(r.fail_pixels, 2);
+    EXPECT_DOUBLE_EQ(r.fail_fraction, 1.0);
+    o.ids = {0, 2};  // pixels 0 and 2: only R's 0.1 differs
+    const CompareResult other = compareImages(p.ref, p.test, o);
+    EXPECT_EQ(other.pixels, 2);
+    EXPECT_NEAR(other.mae, 0.025, kTol);
+    const Image diff = differenceImage(p.ref, p.test, o);
+    EXPECT_FLOAT_EQ(diff.channels[0].pixels[3], 0.0f);  // pixel 3 is object 1: left out
+    EXPECT_NEAR(diff.channels[0].pixels[0], 0.1f, kTol);
+}
+
+TEST(Compare, IdsWithoutAnIdChannelAreAMismatch) {
+    SmallPair p;
+    CompareOptions o;
+    o.ids = {0};
+    try {
+        compareImages(p.ref, p.test, o);
+        FAIL() << "expected CompareMismatch";
+    } catch (const CompareMismatch& e) {
+        EXPECT_EQ(e.side(), CompareMismatch::Side::Reference);
+        EXPECT_NE(std::string(e.what()).find("'id'"), std::string::npos);
+    }
+}
+
 TEST(Compare, MetricsMatchHandComputedValues) {
     SmallPair p;
     const CompareResult r = compareImages(p.ref, p.test, thresholds(0.15, 0, 0.05, 0));
