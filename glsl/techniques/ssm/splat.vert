@@ -1,12 +1,8 @@
 #version 450 core
-// `ssm` splat: one instance per occluder-map texel, a micro-patch parallel to the light at the
-// texel's depth. Four strip vertices span its penumbra rectangle on the soft shadow map
-// (Atty et al. 3.3); empty texels collapse outside the clip volume. Built on the GPU from
-// gl_InstanceID, or, with CPU_PATH, from micro-patches the host read back and uploaded (4.1).
-// With CLIP the extent uses the farthest receiver under the quad, not the farthest of all.
-#ifndef CPU_PATH
-#define CPU_PATH 0
-#endif
+// `ssm` splat: one instance per micro-patch (a non-empty occluder-map texel, parallel to the
+// light at the texel's depth). Four strip vertices span its penumbra rectangle on the soft
+// shadow map (Atty et al. 3.3). The list comes from compact.comp (GPU path) or from the host's
+// readback (CPU path, 4.1). With CLIP the extent uses the farthest receiver under the quad.
 #ifndef CLIP
 #define CLIP 0
 #endif
@@ -17,21 +13,14 @@ uniform vec2 u_ssm_size;
 uniform int u_ssm_res;        // soft-shadow-map texels per side
 uniform float u_receiver_far; // farthest receiver: the virtual plane of the penumbra extent
 
-#if CPU_PATH
 struct Patch {
-    vec4 rect;  // window rectangle at distance 1 (x0, y0, x1, y1)
-    vec4 depth; // x: distance from the light
+    uint texel;  // y * map size + x
+    float z;     // distance from the light
 };
 layout(std430, binding = 4) readonly buffer Patches { Patch u_patches[]; };
-#else
-layout(binding = 0) uniform sampler2D u_occluder;
 uniform int u_map_size;
 uniform vec2 u_occ_lo;       // occluder-map window at distance 1
 uniform vec2 u_occ_texel;    // one texel of it
-uniform float u_occ_near;
-uniform float u_occ_range;   // far - near
-uniform float u_empty;       // the cleared depth: 1 (nearest map) or 0 (farthest map)
-#endif
 
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
@@ -49,21 +38,11 @@ flat out vec4 v_patch;  // micro-patch in the light's frame at its depth (x0, y0
 flat out float v_depth; // its distance from the light
 
 void main() {
-#if CPU_PATH
     Patch p = u_patches[gl_InstanceID];
-    vec4 rect = p.rect;
-    float z = p.depth.x;
-#else
-    ivec2 texel = ivec2(gl_InstanceID % u_map_size, gl_InstanceID / u_map_size);
-    float d = texelFetch(u_occluder, texel, 0).r;
-    if (d == u_empty) {
-        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-        return;
-    }
+    ivec2 texel = ivec2(p.texel % uint(u_map_size), p.texel / uint(u_map_size));
     vec2 lo = u_occ_lo + vec2(texel) * u_occ_texel;
-    vec4 rect = vec4(lo, lo + u_occ_texel);
-    float z = u_occ_near + d * u_occ_range;
-#endif
+    vec4 rect = vec4(lo, lo + u_occ_texel);  // window rectangle at distance 1
+    float z = p.z;
     // Penumbra rectangle on the virtual plane (3.3), in window units: the patch grown by half
     // the light times (1/z_O - 1/z_R).
     vec2 grow = u_light_half * max(1.0 / z - 1.0 / u_receiver_far, 0.0);

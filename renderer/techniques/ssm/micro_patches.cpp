@@ -10,15 +10,13 @@ void readMicroPatches(const gl::Texture& depth, int map_size, const LightWindow&
     glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       static_cast<GLsizei>(n * sizeof(float)), scratch.data());
     patches.clear();
-    const glm::vec2 texel = window.size / static_cast<float>(map_size);
     for (int j = 0; j < map_size; ++j)
         for (int i = 0; i < map_size; ++i) {
             const float d = scratch[static_cast<size_t>(j) * static_cast<size_t>(map_size) +
                                     static_cast<size_t>(i)];
             if (d == empty) continue;
-            const glm::vec2 lo = window.lo + glm::vec2(i, j) * texel;
             const float z = window.near + d * (window.far - window.near);
-            patches.push_back({glm::vec4(lo, lo + texel), glm::vec4(z, 0.0f, 0.0f, 0.0f)});
+            patches.push_back({static_cast<std::uint32_t>(j * map_size + i), z});
         }
 }
 

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <vector>
 
 #include "renderer/gl/handles.h"
@@ -11,12 +12,12 @@
 
 namespace penumbra::techniques::ssm {
 
-// std430 mirror of Patch in glsl/techniques/ssm/splat.vert.
+// std430 mirror of Patch in glsl/techniques/ssm/splat.vert and compact.comp.
 struct MicroPatch {
-    glm::vec4 rect;   // window rectangle at distance 1 (x0, y0, x1, y1)
-    glm::vec4 depth;  // x: distance from the light's centre
+    std::uint32_t texel;  // y * map size + x: the patch is this texel of the map's window
+    float z;              // distance from the light's centre
 };
-static_assert(sizeof(MicroPatch) == 32);
+static_assert(sizeof(MicroPatch) == 8);
 
 // Reads the MAP_SIZE^2 linear-depth occluder map DEPTH (window WINDOW) back and appends one
 // micro-patch per texel that is not EMPTY (the cleared depth) to PATCHES (cleared first).

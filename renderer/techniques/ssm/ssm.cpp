@@ -30,7 +30,7 @@ constexpr std::array kSsmParams = {
     boolParam("two_sided", false,
               "also splat the farthest (back) occluder surfaces into a second map, merged by max"),
     enumParam("path", "gpu", "gpu|cpu",
-              "gpu: quads built from the occluder map on the GPU; cpu: read back (paper 4.1)"),
+              "gpu: micro-patch list compacted on the GPU, drawn indirect; cpu: read back (4.1)"),
     boolParam("clip", true,
               "fit each penumbra quad to the farthest receiver under it, and cull it when none"),
     floatParam("depth_bias", 0.002, 0.0, 0.5,
@@ -38,7 +38,13 @@ constexpr std::array kSsmParams = {
 };
 
 constexpr unsigned kBindingCounters = 3;  // splat.vert's Counters
-constexpr unsigned kBindingPatches = 4;   // splat.vert's Patches (path=cpu)
+constexpr unsigned kBindingPatches = 4;   // splat.vert's and compact.comp's Patches
+constexpr unsigned kBindingCommand = 5;   // compact.comp's Command (path=gpu)
+
+// glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches.
+struct DrawCommand {
+    std::uint32_t vertices, instances, first, base_instance;
+};
 
 class Ssm final : public Technique {
 public:
@@ -76,7 +82,20 @@ public:
             "ssm depth", {"techniques/ssm/depth.vert", "techniques/ssm/depth.frag"});
         splat_program_ = gl::buildProgram(
             "ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
-            {{"CPU_PATH", cpu_path_ ? "1" : "0"}, {"CLIP", clip_ ? "1" : "0"}});
+            {{"CLIP", clip_ ? "1" : "0"}});
+        if (!cpu_path_) {
+            compact_program_ = gl::buildProgram("ssm compact", {"techniques/ssm/compact.comp"});
+            // Room for every texel of one map per side: the list lives on the GPU only.
+            const auto bytes = GLsizeiptr(sizeof(ssm::MicroPatch)) * map_size_ * map_size_;
+            gpu_patches_.clear();
+            for (int side = 0; side < (two_sided_ ? 2 : 1); ++side) {
+                gpu_patches_.push_back(gl::createBuffer("ssm micro-patches (gpu)"));
+                glNamedBufferStorage(gpu_patches_.back().id(), bytes, nullptr, 0);
+            }
+            command_ = gl::createBuffer("ssm splat command");
+            glNamedBufferStorage(command_.id(), sizeof(DrawCommand), nullptr,
+                                 GL_DYNAMIC_STORAGE_BIT);
+        }
         visibility_program_ = gl::buildProgram(
             "ssm visibility", {"passes/fullscreen.vert", "techniques/ssm/visibility.frag"},
             {{"TWO_SIDED", two_sided_ ? "1" : "0"}});
@@ -131,6 +150,9 @@ public:
             const std::uint32_t zero[2] = {0, 0};
             glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero);
             for (int side = 0; side < sides; ++side) {
+                if (!cpu_path_)
+                    ctx.pass(side ? "ssm_compact[back]" : "ssm_compact",
+                             [&] { compact(occ, side); });
                 if (cpu_path_)
                     ctx.pass(side ? "ssm_readback[back]" : "ssm_readback", [&] {
                         ssm::readMicroPatches(occluder_maps_[size_t(side)]->depth, map_size_, occ,
@@ -202,6 +224,25 @@ private:
         glUseProgram(0);
     }
 
+    // Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
+    // makes their count the splat's instance count (no readback).
+    void compact(const LightWindow& occ, int side) {
+        const DrawCommand reset{4, 0, 0, 0};
+        glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
+        glUseProgram(compact_program_.id());
+        glBindTextureUnit(0, occluder_maps_[size_t(side)]->depth.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPatches,
+                         gpu_patches_[size_t(side)].id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCommand, command_.id());
+        gl::setUniform(compact_program_, "u_empty", side ? 0.0f : 1.0f);
+        gl::setUniform(compact_program_, "u_occ_near", occ.near);
+        gl::setUniform(compact_program_, "u_occ_range", occ.far - occ.near);
+        const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        glUseProgram(0);
+    }
+
     // Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
     void splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
                int side) {
@@ -217,7 +258,6 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         const auto& p = splat_program_;
         glUseProgram(p.id());
-        glBindTextureUnit(0, occluder_maps_[size_t(side)]->depth.id());
         glBindTextureUnit(1, receiver_map_->depth.id());
         if (clip_) glBindTextureUnit(2, receiver_max_.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCounters, counters_.id());
@@ -233,13 +273,18 @@ private:
         gl::setUniform(p, "u_map_size", map_size_);
         gl::setUniform(p, "u_occ_lo", occ.lo);
         gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
-        gl::setUniform(p, "u_occ_near", occ.near);
-        gl::setUniform(p, "u_occ_range", occ.far - occ.near);
-        gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
-        const GLsizei instances = cpu_path_ ? static_cast<GLsizei>(patches_.size())
-                                            : static_cast<GLsizei>(map_size_) * map_size_;
         glBindVertexArray(empty_vao_.id());
-        if (instances > 0) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
+        if (cpu_path_) {
+            // patches_buffer_ is bound at kBindingPatches by the readback pass.
+            if (!patches_.empty())
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
+        } else {
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPatches,
+                             gpu_patches_[size_t(side)].id());
+            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+            glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        }
         glBindVertexArray(0);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         glDisable(GL_BLEND);
@@ -277,7 +322,7 @@ private:
     int map_size_, ssm_size_;
     bool fp16_, two_sided_, cpu_path_, clip_;
     float depth_bias_;
-    gl::Program depth_program_, splat_program_, visibility_program_, max_program_;
+    gl::Program depth_program_, splat_program_, visibility_program_, max_program_, compact_program_;
     gl::Texture receiver_max_;
     int receiver_levels_ = 1;
     std::vector<std::unique_ptr<DepthTarget>> occluder_maps_;
@@ -285,6 +330,8 @@ private:
     std::unique_ptr<DepthTarget> receiver_map_;
     gl::Texture receives_;
     gl::Buffer counters_;
+    gl::Buffer command_;                   // path=gpu: the splat's indirect draw
+    std::vector<gl::Buffer> gpu_patches_;  // path=gpu: the micro-patch list of each side
     gl::VertexArray empty_vao_;
     gl::DynamicBuffer patches_buffer_{"ssm micro-patches"};
     std::vector<float> scratch_;
