@@ -10,6 +10,7 @@
 #include "renderer/passes/fullscreen.h"
 #include "renderer/techniques/css/csm_maps.h"
 #include "renderer/techniques/css/css_settings.h"
+#include "renderer/techniques/environment_lights.h"
 #include "renderer/techniques/registry_entries.h"
 
 namespace penumbra::techniques {
@@ -119,6 +120,7 @@ const TechniqueInfo kCssTechnique = {
     "css",
     "convolution soft shadows (Annen et al. 2008): prefiltered Fourier basis of the shadow test",
     css::kCssParams,
-    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Css>(p); }};
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Css>(p); },
+    fittedEnvironmentLights};
 
 }  // namespace penumbra::techniques

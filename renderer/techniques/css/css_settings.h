@@ -32,6 +32,11 @@ inline constexpr std::array kCssParams = {
                "contact sharpening strength A in v^p, p = 1 + A exp(-B (d - z_avg)); 0 = off"),
     floatParam("sharpen_b", 30.0, 0.0, 10000.0,
                "contact sharpening falloff B (per unit of normalised depth)"),
+    floatParam("env_threshold", 0.1, 0.001, 0.999,
+               "environment: fitting threshold t (enlarge while E_added / E_enlarged > t)"),
+    intParam("env_lights", 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
+    enumParam("env_shape", "square", "square|rect", "environment: shape of the fitted lights"),
+    intParam("env_face_size", 32, 4, 256, "environment: cube face resolution for the fitting"),
 };
 
 struct CssSettings {
