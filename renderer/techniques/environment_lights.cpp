@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "renderer/core/error.h"
+#include "renderer/scene/json_file.h"
 #include "renderer/techniques/jitter_hash.h"
 
 namespace penumbra::techniques {
@@ -21,6 +23,19 @@ glm::vec3 rotateY(const glm::vec3& v, float degrees) {
 
 scene::CubeFaces facesOf(const scene::Scene& s, int size) {
     return scene::toCubeFaces(*s.environment->image, size, s.environment->intensity);
+}
+
+// The fit in FILE (relative to the scene's folder), its energy scaled by the environment's
+// intensity like a fit of the map would be.
+scene::LightFit readLightFit(const scene::Scene& s, const std::string& file) {
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = s.path.parent_path() / path;
+    const std::string label = "technique.env_lights_file: " + path.string();
+    scene::LightFit fit = scene::lightFitFromJson(
+        scene::parseJsonText(scene::readTextFile(path, label, std::size_t(64) << 20), label),
+        label);
+    for (auto& l : fit.lights) l.energy *= s.environment ? s.environment->intensity : 1.0f;
+    return fit;
 }
 
 }  // namespace
@@ -51,7 +66,18 @@ EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s
     settings.max_lights = p.getInt("env_lights");
     settings.square = p.getString("env_shape") == "square";
     const int face_size = p.getInt("env_face_size");
-    const scene::LightFit fit = scene::fitLights(facesOf(s, face_size), settings);
+    const std::string file = p.getString("env_lights_file");
+    scene::LightFit fit;
+    if (file.empty()) {
+        fit = scene::fitLights(facesOf(s, face_size), settings);
+    } else {
+        fit = readLightFit(s, file);
+        if (fit.lights.size() > static_cast<size_t>(settings.max_lights)) {
+            for (size_t i = static_cast<size_t>(settings.max_lights); i < fit.lights.size(); ++i)
+                fit.captured -= fit.lights[i].share;
+            fit.lights.resize(static_cast<size_t>(settings.max_lights));
+        }
+    }
     EnvironmentLights out;
     for (const auto& l : fit.lights) out.lights.push_back(farLight(s, l));
     out.stats["lights_fitted"] = fit.lights.size();

@@ -15,7 +15,7 @@ namespace penumbra::techniques {
 scene::RectLight farLight(const scene::Scene& s, const scene::FittedLight& light);
 
 // `css`: fits lights to S's environment with P's env_threshold, env_lights, env_shape and
-// env_face_size.
+// env_face_size, or reads them from env_lights_file (the first env_lights of them).
 EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s);
 // `reference`: P's env_samples directions drawn by luminance energy from the cube faces (stratified
 // in the energy's cumulative distribution), each a small light carrying an equal share.

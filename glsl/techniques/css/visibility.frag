@@ -17,6 +17,9 @@
 #ifndef MIP_TAPS
 #define MIP_TAPS 2
 #endif
+#ifndef SEARCH_TAPS
+#define SEARCH_TAPS 1  // mipmap taps per side in the blocker searches: an average needs less
+#endif
 #ifndef SEARCH_STEPS
 #define SEARCH_STEPS 0
 #endif
@@ -54,7 +57,7 @@ struct Kernel {
     vec2 lo, hi;  // the box clipped to the map, in SAT texture coordinates
     float inv_area;
 };
-Kernel makeKernel(vec2 c, vec2 s) {
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
     // Outside the map every (centred) basis value is 0: clip the box, divide by its full area.
     float n1 = u_map_size + 1.0;
     Kernel k;
@@ -76,14 +79,14 @@ struct Kernel {
     ivec2 taps;
     float lod;
 };
-Kernel makeKernel(vec2 c, vec2 s) {
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
     // TAPS x TAPS trilinear taps per square of the shorter side (a rectangle gets more along
     // its longer axis, at most MAX_ANISO times more: anisotropic filtering), each at GL's level
     // for its footprint, log2(width): a grid of taps follows a box kernel more closely than one
     // coarse lookup, whose bilinear tent is twice the box's width.
-    float tap = max(min(s.x, s.y) / float(MIP_TAPS), 1.0);
+    float tap = max(min(s.x, s.y) / float(taps_per_side), 1.0);
     Kernel k;
-    k.taps = clamp(ivec2(ceil(s / tap - 0.01)), ivec2(1), ivec2(MIP_TAPS * MAX_ANISO));
+    k.taps = clamp(ivec2(ceil(s / tap - 0.01)), ivec2(1), ivec2(taps_per_side * MAX_ANISO));
     vec2 footprint = s / vec2(k.taps);
     k.lod = max(log2(max(footprint.x, footprint.y)), 0.0);
     k.step = footprint / u_map_size;
@@ -99,6 +102,13 @@ vec4 boxMean(Kernel k, int layer) {
 }
 #endif
 
+// (sin, cos)(c_k ds) / c_k for k = 2i+1, 2i+2: the weights of basis layer pair I.
+vec4 cssWeights(int i, float ds) {
+    float c1 = cssCoefficient(2 * i + 1), c2 = cssCoefficient(2 * i + 2);
+    vec4 w = vec4(sin(c1 * ds) / c1, cos(c1 * ds) / c1, sin(c2 * ds) / c2, cos(c2 * ds) / c2);
+    return 2 * i + 2 > ORDER ? vec4(w.xy, 0.0, 0.0) : w;
+}
+
 // The filtered complementary test fbar (1 = blocked) at shifted receiver depth DS, with
 // WEIGHTS = (sin, cos)(c_k ds) / c_k for k = 2i+1, 2i+2 in each pair i and EMPTY = fbar(ds, 1),
 // the test of an empty texel; and, when WITH_Z, the filtered fbar z (CSM-Z). The basis is
@@ -106,16 +116,15 @@ vec4 boxMean(Kernel k, int layer) {
 // over the kernel; adding EMPTY back for the covered texels only (coverage from the z layer)
 // gives the sum over casters alone. An empty texel never blocks, so it adds exactly 0 instead
 // of the truncated series' ringing, which would swamp a thin caster in a wide kernel.
-vec2 filteredTest(Kernel k, vec4 weights[CSS_PAIRS], float empty, bool with_z) {
+vec2 filteredTest(Kernel k, float ds, float empty, bool with_z) {
     float f = 0.0, fz = 0.0;
     for (int i = 0; i < CSS_PAIRS; ++i) {
+        vec4 w = cssWeights(i, ds);
         vec4 b = boxMean(k, i);  // cos, sin, cos, sin
-        f += 2.0 * (weights[i].x * b.x - weights[i].y * b.y + weights[i].z * b.z -
-                    weights[i].w * b.w);
+        f += 2.0 * (w.x * b.x - w.y * b.y + w.z * b.z - w.w * b.w);
         if (with_z) {
             vec4 bz = boxMean(k, CSS_PAIRS + i);
-            fz += 2.0 * (weights[i].x * bz.x - weights[i].y * bz.y + weights[i].z * bz.z -
-                         weights[i].w * bz.w);
+            fz += 2.0 * (w.x * bz.x - w.y * bz.y + w.z * bz.z - w.w * bz.w);
         }
     }
     vec2 z_coverage = boxMean(k, 2 * CSS_PAIRS).xy;  // mean of (z - 1), coverage
@@ -162,21 +171,20 @@ void main() {
     float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
     float ds = max(d - u_ring_shift, 0.0);
 
-    // sin(c_k ds) / c_k and cos(c_k ds) / c_k: the weights of the basis in the series.
-    vec4 weights[CSS_PAIRS];
-    for (int i = 0; i < CSS_PAIRS; ++i) {
-        float c1 = cssCoefficient(2 * i + 1), c2 = cssCoefficient(2 * i + 2);
-        weights[i] = vec4(sin(c1 * ds) / c1, cos(c1 * ds) / c1, sin(c2 * ds) / c2, cos(c2 * ds) / c2);
-        if (2 * i + 2 > ORDER) weights[i].zw = vec2(0.0);
-    }
     // fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k = 1/2 - 2 sum_k sin(c_k ds) / c_k,
     // since sin(c_k (x - 1)) = -sin(c_k x) for odd multiples c_k of pi.
     float empty = 0.5;
-    for (int i = 0; i < CSS_PAIRS; ++i) empty -= 2.0 * (weights[i].x + weights[i].z);
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        vec4 w = cssWeights(i, ds);
+        empty -= 2.0 * (w.x + w.z);
+    }
 
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
-    vec2 search = filteredTest(makeKernel(c, w0), weights, empty, true);
+    Kernel k0 = makeKernel(c, w0, SEARCH_TAPS);
+    // No caster under the search kernel: nothing can block (empty texels add exactly 0).
+    if (boxMean(k0, 2 * CSS_PAIRS).y <= 1e-6) return;
+    vec2 search = filteredTest(k0, ds, empty, true);
     if (search.x < 1e-3) return;  // no blocker in the search area
     // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
     // cone cut at the plane of the current z_avg instead of the near plane (the paper's
@@ -185,7 +193,7 @@ void main() {
     float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     for (int i = 0; i < SEARCH_STEPS; ++i) {
         vec2 w = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-        vec2 refined = filteredTest(makeKernel(c, w), weights, empty, true);
+        vec2 refined = filteredTest(makeKernel(c, w, SEARCH_TAPS), ds, empty, true);
         if (refined.x < 1e-3) break;  // keep the last estimate
         z_avg = clamp(refined.y / refined.x, 0.0, d);
         zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
@@ -194,7 +202,7 @@ void main() {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-    float f = filteredTest(makeKernel(c, w1), weights, empty, false).x;
+    float f = filteredTest(makeKernel(c, w1, MIP_TAPS), ds, empty, false).x;
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
     o_visibility = vec4(horizon * pow(1.0 - s, p), 0.0, 0.0, 0.0);

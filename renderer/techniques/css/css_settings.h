@@ -12,10 +12,10 @@ namespace penumbra::techniques::css {
 
 inline constexpr std::array kCssParams = {
     intParam("order", 4, 1, 16, "M: Fourier terms of the shadow-test expansion"),
-    intParam("map_size", 512, 16, 4096, "shadow map (and basis image) width and height in texels"),
-    enumParam("filter", "auto", "auto|mipmap|sat",
-              "prefilter: mipmaps, summed-area tables, or auto (mipmaps for square lights, SATs "
-              "for rectangular ones)"),
+    intParam("map_size", 256, 16, 4096, "shadow map (and basis image) width and height in texels"),
+    enumParam("filter", "sat", "sat|mipmap|auto",
+              "prefilter: summed-area tables, mipmaps, or auto (the paper's choice: mipmaps for "
+              "square lights, SATs for rectangular ones)"),
     intParam("max_aniso", 8, 1, 16,
              "mipmap taps along the longer axis of a rectangular light's kernel (anisotropy)"),
     intParam("mip_taps", 2, 1, 4,
@@ -37,12 +37,15 @@ inline constexpr std::array kCssParams = {
     intParam("env_lights", 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
     enumParam("env_shape", "square", "square|rect", "environment: shape of the fitted lights"),
     intParam("env_face_size", 32, 4, 256, "environment: cube face resolution for the fitting"),
+    stringParam("env_lights_file", "",
+                "environment: lights from a `penumbra fit-lights` JSON (relative to the scene "
+                "file) instead of fitting; empty = fit"),
 };
 
 struct CssSettings {
     int order = 4;
-    int map_size = 512;
-    enum class FilterChoice { Auto, Mipmap, Sat } filter = FilterChoice::Auto;
+    int map_size = 256;
+    enum class FilterChoice { Auto, Mipmap, Sat } filter = FilterChoice::Sat;
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;

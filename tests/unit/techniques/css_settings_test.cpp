@@ -20,11 +20,11 @@ techniques::css::CssSettings settingsOf(const nlohmann::json& block) {
 TEST(CssSettings, DefaultsAndOverrides) {
     auto s = settingsOf({{"name", "css"}});
     EXPECT_EQ(s.order, 4);
-    EXPECT_EQ(s.map_size, 512);
-    EXPECT_EQ(s.filter, techniques::css::CssSettings::FilterChoice::Auto);
-    s = settingsOf({{"name", "css"}, {"order", 16}, {"filter", "sat"}, {"sharpen_a", 0.0}});
-    EXPECT_EQ(s.order, 16);
+    EXPECT_EQ(s.map_size, 256);
     EXPECT_EQ(s.filter, techniques::css::CssSettings::FilterChoice::Sat);
+    s = settingsOf({{"name", "css"}, {"order", 16}, {"filter", "auto"}, {"sharpen_a", 0.0}});
+    EXPECT_EQ(s.order, 16);
+    EXPECT_EQ(s.filter, techniques::css::CssSettings::FilterChoice::Auto);
     EXPECT_EQ(s.sharpen_a, 0.0f);
     EXPECT_THROW(settingsOf({{"name", "css"}, {"order", 17}}), InputError);
     EXPECT_THROW(settingsOf({{"name", "css"}, {"filter", "box"}}), InputError);
@@ -32,6 +32,7 @@ TEST(CssSettings, DefaultsAndOverrides) {
 
 TEST(CssSettings, AutoFilterFollowsTheLightsShape) {
     techniques::css::CssSettings s;
+    s.filter = techniques::css::CssSettings::FilterChoice::Auto;
     scene::RectLight light;
     light.size = {1.0f, 1.0f};
     EXPECT_EQ(techniques::css::filterFor(s, light), CsmMaps::Filter::Mipmap);

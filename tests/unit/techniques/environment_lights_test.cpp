@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 
+#include "renderer/core/error.h"
 #include "renderer/core/light_geometry.h"
 #include "renderer/techniques/environment_lights.h"
 
@@ -84,4 +88,37 @@ TEST(EnvironmentLights, FittedAndSampledLightsCarryTheMapsEnergy) {
     }
     // Both deliver the map's energy (the patch, about 50 x its solid angle).
     EXPECT_NEAR(sampled_sum, fitted_sum, 0.01 * fitted_sum);
+}
+
+TEST(EnvironmentLights, ReadsAFittedLightsFile) {
+    const char* tmp = std::getenv("PENUMBRA_TEST_TMP");
+    const auto dir = std::filesystem::path(tmp ? tmp : "/tmp") / "env_lights_file";
+    std::filesystem::create_directories(dir);
+    scene::Scene s = skyScene(0.0f);
+    s.path = dir / "scene.json";
+    s.environment->intensity = 2.0f;
+    // Fit the unscaled map (what `penumbra fit-lights` writes), then read it back through the
+    // parameter: the same lights, scaled by the scene's intensity.
+    scene::FitSettings settings;
+    settings.max_lights = 3;
+    const auto fit = scene::fitLights(scene::toCubeFaces(*s.environment->image, 32), settings);
+    std::ofstream(dir / "lights.json") << scene::lightFitJson(fit, settings, 32).dump();
+    const auto* css = techniques::findTechnique("css");
+    nlohmann::json block = {{"name", "css"}, {"env_lights_file", "lights.json"}, {"env_lights", 2}};
+    const auto read =
+        techniques::fittedEnvironmentLights(resolveParams(css->params, block, "test"), s);
+    ASSERT_EQ(read.lights.size(), 2u);  // env_lights keeps the first two
+    EXPECT_NEAR(read.stats["energy_captured"].get<double>(),
+                fit.lights[0].share + fit.lights[1].share, 1e-9);
+    const auto direct = techniques::farLight(s, fit.lights[0]);
+    EXPECT_NEAR(glm::distance(read.lights[0].radiance(), 2.0f * direct.radiance()), 0.0f,
+                1e-3f * glm::length(direct.radiance()));
+    block["env_lights_file"] = "missing.json";
+    try {
+        techniques::fittedEnvironmentLights(resolveParams(css->params, block, "test"), s);
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("technique.env_lights_file"), std::string::npos)
+            << e.what();
+    }
 }
