@@ -42,4 +42,15 @@ expect_exit 2 "not-an-image.txt: expected an .exr or .hdr" -- \
     "$PENUMBRA" fit-lights "$WORK/not-an-image.txt" "${out[@]}"
 [ ! -e "$WORK/bad.json" ] && [ ! -e "$WORK/bad.png" ] || fail "a failed run left output"
 [ -z "$(ls -A "$WORK" | grep '\.tmp$' || true)" ] || fail "temporary files left behind"
+# A scene with an environment: css fits its lights, or reads them from env_lights_file.
+scene="$PENUMBRA_SOURCE_DIR/tests/data/gl/environment.json"
+"$PENUMBRA" fit-lights "$PENUMBRA_SOURCE_DIR/tests/data/gl/sky_sun.exr" --max 4 --shape square \
+    -o "$WORK/sky_lights.json" 2>/dev/null
+"$PENUMBRA" render "$scene" --size 64x48 -D "technique.env_lights_file=\"$WORK/sky_lights.json\"" \
+    -o "$WORK/env.exr" --quiet || fail "render with env_lights_file"
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["stats"]; assert s["lights_fitted"] == 4, s' \
+    "$WORK/env.json"
+expect_exit 2 "technique.env_lights_file: .*missing.json" -- "$PENUMBRA" render "$scene" \
+    --size 64x48 -D technique.env_lights_file=missing.json -o "$WORK/bad.exr"
+[ ! -e "$WORK/bad.exr" ] || fail "a refused render left an EXR"
 echo "fit-lights ok"

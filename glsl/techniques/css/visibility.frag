@@ -109,9 +109,9 @@ vec4 cssWeights(int i, float ds) {
     return 2 * i + 2 > ORDER ? vec4(w.xy, 0.0, 0.0) : w;
 }
 
-// The filtered complementary test fbar (1 = blocked) at shifted receiver depth DS, with
-// WEIGHTS = (sin, cos)(c_k ds) / c_k for k = 2i+1, 2i+2 in each pair i and EMPTY = fbar(ds, 1),
-// the test of an empty texel; and, when WITH_Z, the filtered fbar z (CSM-Z). The basis is
+// The filtered complementary test fbar (1 = blocked) over kernel K at shifted receiver depth
+// DS, given EMPTY = fbar(ds, 1), the test of an empty texel; and, when WITH_Z, the filtered
+// fbar z (CSM-Z). The basis is
 // stored minus its empty-texel value, so the series sums give sum_i w_i (fbar(d, z_i) - EMPTY)
 // over the kernel; adding EMPTY back for the covered texels only (coverage from the z layer)
 // gives the sum over casters alone. An empty texel never blocks, so it adds exactly 0 instead
