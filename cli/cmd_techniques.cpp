@@ -30,6 +30,8 @@ std::string rangeText(const ParamSpec& s) {
             if (!out.empty()) out += '|';
             out += c.get<std::string>();
         }
+    } else if (s.type == ParamType::String) {
+        out = "text";
     } else {
         out = "true|false";
     }

@@ -14,5 +14,6 @@ int runCompare(const Args& args);
 int runTechniques(const Args& args);
 int runInfo(const Args& args);
 int runSweep(const Args& args);
+int runFitLights(const Args& args);
 
 }  // namespace penumbra::cli

@@ -19,6 +19,7 @@ commands:
   techniques [NAME] [--json]      list techniques and their parameters
   info [--json]                   OpenGL backends found and the one chosen
   sweep SCENE.json --vary ... -o DIR   error and time over a cartesian product of values
+  fit-lights ENV.exr [options]    fit area lights to an environment map (JSON + picture)
   --version                       print the version
 
 Every command answers --help.
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
         if (command == "techniques") return cli::runTechniques(args);
         if (command == "info") return cli::runInfo(args);
         if (command == "sweep") return cli::runSweep(args);
+        if (command == "fit-lights") return cli::runFitLights(args);
         std::fprintf(stderr, "penumbra: unknown command '%s' (see penumbra --help)\n",
                      command.c_str());
         return static_cast<int>(ExitCode::BadInput);

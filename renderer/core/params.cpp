@@ -50,6 +50,8 @@ std::string_view paramTypeName(ParamType type) {
             return "bool";
         case ParamType::Enum:
             return "enum";
+        case ParamType::String:
+            return "string";
     }
     return "?";
 }
@@ -63,6 +65,7 @@ nlohmann::json paramDefault(const ParamSpec& s) {
         case ParamType::Bool:
             return s.def != 0;
         case ParamType::Enum:
+        case ParamType::String:
             return std::string(s.enum_def);
     }
     return nullptr;
@@ -165,6 +168,10 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
                 if (!v.is_string() || !choiceAllowed(s.choices, v.get<std::string>()))
                     throw InputError(at + "expected one of " + choiceList(s.choices) + ", got " +
                                      v.dump());
+                out[key] = v.get<std::string>();
+                break;
+            case ParamType::String:
+                if (!v.is_string()) throw InputError(at + "expected a string, got " + v.dump());
                 out[key] = v.get<std::string>();
                 break;
         }

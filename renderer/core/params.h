@@ -10,7 +10,7 @@
 
 namespace penumbra {
 
-enum class ParamType { Int, Float, Bool, Enum };
+enum class ParamType { Int, Float, Bool, Enum, String };
 
 struct ParamSpec {
     std::string_view key;
@@ -18,7 +18,7 @@ struct ParamSpec {
     double def = 0;             // Int, Float, Bool (0/1)
     double min = 0, max = 0;    // Int, Float: inclusive range
     std::string_view choices;   // Enum: "a|b|c"
-    std::string_view enum_def;  // Enum: the default choice
+    std::string_view enum_def;  // Enum: the default choice; String: the default text
     std::string_view doc;       // one line
 };
 
@@ -36,6 +36,11 @@ constexpr ParamSpec boolParam(std::string_view key, bool def, std::string_view d
 constexpr ParamSpec enumParam(std::string_view key, std::string_view def, std::string_view choices,
                               std::string_view doc) {
     return {key, ParamType::Enum, 0, 0, 0, choices, def, doc};
+}
+
+// A free-form text value (e.g. a file path); DEF may be empty.
+constexpr ParamSpec stringParam(std::string_view key, std::string_view def, std::string_view doc) {
+    return {key, ParamType::String, 0, 0, 0, {}, def, doc};
 }
 
 std::string_view paramTypeName(ParamType type);

@@ -33,7 +33,7 @@ void OutputTargets::bind(int light) {
 
 void FrameContext::pass(const std::string& name, const std::function<void()>& fn) {
     std::string full = name;
-    if (light >= 0 && scene.lights.size() > 1) {
+    if (light >= 0 && lights.size() > 1) {
         full += '@';
         full += std::to_string(light);
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,16 +41,25 @@ public:
     FrameContext(const scene::Scene& s, const passes::GpuScene& g, const passes::GBuffer& gb,
                  const passes::CameraMatrices& cam, OutputTargets& targets, PassTimer& timer,
                  nlohmann::json& st)
-        : scene(s), gpu(g), gbuffer(gb), camera(cam), targets_(targets), timer_(timer), stats(st) {}
+        : scene(s),
+          gpu(g),
+          gbuffer(gb),
+          camera(cam),
+          lights(s.lights),
+          targets_(targets),
+          timer_(timer),
+          stats(st) {}
 
     const scene::Scene& scene;
     const passes::GpuScene& gpu;
     const passes::GBuffer& gbuffer;
     const passes::CameraMatrices& camera;
-    int light = -1;  // index into scene.lights being rendered; -1 in the frame's own passes
-    const scene::RectLight& currentLight() const {
-        return scene.lights[static_cast<size_t>(light)];
-    }
+    // The lights rendered: the scene's own, then those the technique made of its environment.
+    std::span<const scene::RectLight> lights;
+    int light = -1;  // index into lights being rendered; -1 in the frame's own passes
+    const scene::RectLight& currentLight() const { return lights[static_cast<size_t>(light)]; }
+    // Whether the current light stands for part of the environment map.
+    bool environmentLight() const { return light >= static_cast<int>(scene.lights.size()); }
 
     // Runs FN as one named, timed pass. With several lights, a technique's pass (light >= 0)
     // gets "@<light>" appended.

@@ -13,6 +13,7 @@ FrameRenderer::FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& firs
       width_(first.image.width),
       height_(first.image.height),
       lights_(static_cast<int>(first.lights.size())),
+      first_(first),
       gpu_(first),
       gbuffer_(width_, height_),
       shade_(width_, height_) {
@@ -24,8 +25,12 @@ void FrameRenderer::setParams(const Params& params) {
     if (technique_ && params.json() == params_.json()) return;
     params_ = params;
     technique_ = info_.create(params_);
+    const int before = lights_;
+    environment_ = {};
+    if (first_.environment && info_.environment) environment_ = info_.environment(params_, first_);
+    lights_ = static_cast<int>(first_.lights.size() + environment_.lights.size());
     auto diagnostics = technique_->diagnostics();
-    if (!targets_ || diagnostics.size() != diagnostics_.size())
+    if (!targets_ || diagnostics.size() != diagnostics_.size() || lights_ != before)
         targets_ = std::make_unique<OutputTargets>(width_, height_, lights_,
                                                    static_cast<int>(diagnostics.size()));
     diagnostics_ = std::move(diagnostics);
@@ -36,14 +41,18 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
     gpu_.update(s);
     const passes::CameraMatrices camera = passes::cameraMatrices(s.camera, width_, height_);
     nlohmann::json stats = nlohmann::json::object();
+    for (const auto& [key, value] : environment_.stats.items()) stats[key] = value;
+    all_lights_ = s.lights;
+    all_lights_.insert(all_lights_.end(), environment_.lights.begin(), environment_.lights.end());
     FrameContext ctx(s, gpu_, gbuffer_, camera, *targets_, timer, stats);
+    ctx.lights = all_lights_;
     ctx.pass("gbuffer", [&] { gbuffer_.render(gpu_, camera); });
     for (int l = 0; l < lights_; ++l) {
         ctx.light = l;
         technique_->render(ctx);
     }
     ctx.light = -1;
-    ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), s.lights); });
+    ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_); });
     return stats;
 }
 

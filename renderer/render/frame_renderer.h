@@ -36,13 +36,18 @@ public:
     output::Image readImage() const;
 
     const passes::GpuScene& gpuScene() const { return gpu_; }
+    // Lights rendered per frame: the scene's and those made of its environment.
+    int lightCount() const { return lights_; }
     const Params& params() const { return params_; }
 
 private:
     const gl::ContextInfo& gl_;
     const techniques::TechniqueInfo& info_;
     Params params_;
-    int width_, height_, lights_;
+    int width_, height_, lights_;  // lights_: the scene's and the environment's
+    const scene::Scene& first_;
+    techniques::EnvironmentLights environment_;
+    std::vector<scene::RectLight> all_lights_;
     passes::GpuScene gpu_;
     passes::GBuffer gbuffer_;
     passes::Shade shade_;

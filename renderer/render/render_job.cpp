@@ -171,7 +171,6 @@ int runRenderJob(const RenderRequest& req) {
 
     // 3. Per-run GPU resources.
     const int width = first.image.width, height = first.image.height;
-    const int lights = static_cast<int>(first.lights.size());
     FrameRenderer renderer(glinfo, first, info, params);
     PassTimer timer(glinfo.software);
 
@@ -238,7 +237,7 @@ int runRenderJob(const RenderRequest& req) {
             report.warmup = req.warmup;
             report.stats = stats;
             report.stats["triangles"] = renderer.gpuScene().triangleCount();
-            report.stats["lights"] = lights;
+            report.stats["lights"] = renderer.lightCount();
             report.output = {{"exr", plan.exr}};
             if (!plan.preview.empty()) report.output["preview"] = plan.preview;
             output::writeTimingJson(plan.timing, report);

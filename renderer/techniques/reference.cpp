@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 
+#include "renderer/techniques/environment_lights.h"
 #include "renderer/techniques/jitter_hash.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/registry_entries.h"
@@ -19,6 +20,8 @@ constexpr std::array kReferenceParams = {
     intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
     kNormalOffsetParam,
     kDepthBiasParam,
+    intParam("env_samples", 512, 1, 1024,
+             "environment: directions sampled by energy, one hard shadow map each"),
 };
 
 class Reference final : public Technique {
@@ -43,7 +46,10 @@ public:
         sampler_.prepare(gl, settings_);
     }
     void render(render::FrameContext& ctx) override {
-        int maps = sampler_.render(ctx, samples_);
+        // A light sampled from the environment is one direction: one map at its centre.
+        const LightSample centre{{0.5f, 0.5f}, 1.0f};
+        int maps = ctx.environmentLight() ? sampler_.render(ctx, std::span(&centre, 1))
+                                          : sampler_.render(ctx, samples_);
         ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + maps;
     }
 
@@ -62,6 +68,7 @@ const TechniqueInfo kReferenceTechnique = {
     "reference",
     "N x N stratified jittered light samples, one shadow map each, averaged: the ground truth",
     kReferenceParams,
-    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); }};
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); },
+    sampledEnvironmentLights};
 
 }  // namespace penumbra::techniques

@@ -31,11 +31,20 @@ public:
     virtual std::vector<DiagnosticChannel> diagnostics() const { return {}; }
 };
 
+// Lights a technique makes of the scene's environment map, rendered after the scene's own.
+struct EnvironmentLights {
+    std::vector<scene::RectLight> lights;
+    nlohmann::json stats = nlohmann::json::object();  // e.g. lights fitted, energy captured
+};
+
 struct TechniqueInfo {
     std::string_view name;
     std::string_view summary;
     std::span<const ParamSpec> params;  // the one source of truth for -D, JSON, docs, output
     std::unique_ptr<Technique> (*create)(const Params&);
+    // The lights of a scene's environment (called only when it has one), or nullptr: the
+    // technique ignores environments.
+    EnvironmentLights (*environment)(const Params&, const scene::Scene&) = nullptr;
 };
 
 // Every registered technique, in listing order.

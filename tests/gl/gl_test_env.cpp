@@ -71,6 +71,21 @@ double closedFormShadowMae(const output::Image& img, double light_half, long min
     return n ? sum / static_cast<double>(n) : 1.0;
 }
 
+double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels) {
+    const auto& vr = channel(ref, "visibility");
+    const auto& vt = channel(test, "visibility");
+    const auto& id = channel(test, "id");
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < vr.size(); ++i) {
+        if (id[i] != 0.0f || (vr[i] >= 0.999f && vt[i] >= 0.999f)) continue;
+        sum += std::fabs(double(vr[i]) - double(vt[i]));
+        ++n;
+    }
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the floor";
+    return n ? sum / static_cast<double>(n) : 1.0;
+}
+
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
     if (a.size() != b.size()) throw std::runtime_error("maxAbsDifference: sizes differ");
     double max = 0;

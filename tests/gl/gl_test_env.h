@@ -27,6 +27,11 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
 // more than MIN_PIXELS such pixels.
 double closedFormShadowMae(const output::Image& img, double light_half, long min_pixels);
 
+// Shadow-region MAE (Atty et al. 5.2.1) of TEST's visibility against REF's over the floor
+// (id 0), the receiver of the test scenes, where either is below 0.999. Expects more than
+// MIN_PIXELS such pixels.
+double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels = 500);
+
 // The largest |a[i] - b[i]| of two equally long channels.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
 

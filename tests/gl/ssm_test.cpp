@@ -20,21 +20,8 @@ std::string ssm(const std::string& extra = "") {
     return R"({"name": "ssm")" + extra + "}";
 }
 
-// Shadow-region MAE (Atty et al. 5.2.1) of TEST's visibility against REF's over floor pixels
-// (id 0) where either is below 0.999.
 double shadowMae(const penumbra::output::Image& ref, const penumbra::output::Image& test) {
-    const auto& vr = channel(ref, "visibility");
-    const auto& vt = channel(test, "visibility");
-    const auto& id = channel(test, "id");
-    double sum = 0;
-    long n = 0;
-    for (size_t i = 0; i < vr.size(); ++i) {
-        if (id[i] != 0.0f || (vr[i] >= 0.999f && vt[i] >= 0.999f)) continue;
-        sum += std::fabs(double(vr[i]) - double(vt[i]));
-        ++n;
-    }
-    EXPECT_GT(n, 500) << "the shadow should cover a good part of the floor";
-    return n ? sum / static_cast<double>(n) : 1.0;
+    return penumbra::testing::floorShadowMae(ref, test);
 }
 
 // The same against the closed form of closed_form.json with a light of half size HALF.

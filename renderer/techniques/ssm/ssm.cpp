@@ -139,12 +139,15 @@ public:
         if (shadowed) {
             ctx.pass("ssm_occluder_map", [&] {
                 for (int side = 0; side < sides; ++side)
-                    renderDepth(ctx, light, occ, *occluder_maps_[size_t(side)], map_size_,
-                                passes::GpuScene::Filter::Casters, side == 1);
+                    occluder_maps_[size_t(side)]->render(ctx.gpu, depth_program_,
+                                                         passes::GpuScene::Filter::Casters,
+                                                         occ.viewProj(light), light, occ.near,
+                                                         1.0f / (occ.far - occ.near), side == 1);
             });
             ctx.pass("ssm_receiver_map", [&] {
-                renderDepth(ctx, light, soft, *receiver_map_, ssm_size_,
-                            passes::GpuScene::Filter::Receivers, false);
+                receiver_map_->render(ctx.gpu, depth_program_, passes::GpuScene::Filter::Receivers,
+                                      soft.viewProj(light), light, soft.near,
+                                      1.0f / (soft.far - soft.near), false);
                 if (clip_) buildReceiverMax();
             });
             const std::uint32_t zero[2] = {0, 0};
@@ -181,33 +184,6 @@ public:
     }
 
 private:
-    // Linear depth of the objects FILTER selects into TARGET: nearest surface, or farthest
-    // when FARTHEST (the two-sided variant's back map).
-    void renderDepth(render::FrameContext& ctx, const scene::RectLight& light, const LightWindow& w,
-                     const DepthTarget& target, int size, passes::GpuScene::Filter filter,
-                     bool farthest) {
-        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
-        glViewport(0, 0, size, size);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(farthest ? GL_GREATER : GL_LESS);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
-        const float clear = farthest ? 0.0f : 1.0f;
-        glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &clear);
-        glUseProgram(depth_program_.id());
-        gl::setUniform(depth_program_, "u_view_proj", w.viewProj(light));
-        gl::setUniform(depth_program_, "u_light_centre", light.position);
-        gl::setUniform(depth_program_, "u_light_forward", light.forward());
-        gl::setUniform(depth_program_, "u_near", w.near);
-        gl::setUniform(depth_program_, "u_inv_range", 1.0f / (w.far - w.near));
-        ctx.gpu.draw(depth_program_, filter);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_DEPTH_TEST);
-        glUseProgram(0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-
     // The farthest-receiver pyramid of the receiver map (receiver_max.comp), level by level.
     void buildReceiverMax() {
         glUseProgram(max_program_.id());

@@ -80,3 +80,19 @@ TEST(Params, SpecJson) {
     EXPECT_EQ(j["choices"], nlohmann::json::array({"absolute", "relative"}));
     EXPECT_EQ(penumbra::paramSpecJson(kSpecs[0])["range"], nlohmann::json::array({1, 32}));
 }
+
+TEST(Params, StringParameters) {
+    constexpr std::array kText = {penumbra::stringParam("file", "", "a path")};
+    auto p = penumbra::resolveParams(kText, nlohmann::json::object(), "s.json: technique");
+    EXPECT_EQ(p.getString("file"), "");
+    p = penumbra::resolveParams(kText, {{"file", "lights.json"}}, "s.json: technique");
+    EXPECT_EQ(p.getString("file"), "lights.json");
+    EXPECT_EQ(penumbra::paramSpecJson(kText[0])["type"], "string");
+    try {
+        penumbra::resolveParams(kText, {{"file", 3}}, "s.json: technique");
+        FAIL() << "expected an InputError";
+    } catch (const penumbra::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("technique.file: expected a string"),
+                  std::string::npos);
+    }
+}

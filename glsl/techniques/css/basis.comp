@@ -1,0 +1,32 @@
+#version 450 core
+// `css` basis images from a linear-depth shadow map: for order M, layers 0..P-1 hold the CSM
+// basis (cos c_k z, sin c_k z) for two k each, layers P..2P-1 the CSM-Z basis (z cos c_k z,
+// z sin c_k z), layer 2P holds z and the caster coverage (1 where a caster was rasterised)
+// (P = ceil(M / 2), c_k = pi (2k - 1)). Every value is stored
+// minus its value for an empty texel (z = 1: cos = -1, sin = 0), so the uncovered part of the
+// map and everything outside it is exactly 0: mipmaps use a zero border and summed-area tables
+// grow only with the area that casters cover (FP32 precision).
+#include "techniques/css/basis_layout.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0) uniform sampler2D u_depth;
+layout(rgba32f, binding = 0) uniform writeonly image2DArray u_basis;
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, textureSize(u_depth, 0)))) return;
+    float z = texelFetch(u_depth, p, 0).r;
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        float c1 = cssCoefficient(2 * i + 1), c2 = cssCoefficient(2 * i + 2);
+        vec4 b = vec4(cos(c1 * z) + 1.0, sin(c1 * z), cos(c2 * z) + 1.0, sin(c2 * z));
+        if (2 * i + 2 > ORDER) b.zw = vec2(0.0);  // an odd order leaves the last half empty
+        imageStore(u_basis, ivec3(p, i), b);
+        // z cos(c z) at z = 1 is -1 as well: the same centring.
+        vec4 bz = vec4(z * cos(c1 * z) + 1.0, z * sin(c1 * z), z * cos(c2 * z) + 1.0,
+                       z * sin(c2 * z));
+        if (2 * i + 2 > ORDER) bz.zw = vec2(0.0);
+        imageStore(u_basis, ivec3(p, CSS_PAIRS + i), bz);
+    }
+    // z, and whether a caster covers the texel (real depths stay below 1 - m, csm_maps.h).
+    imageStore(u_basis, ivec3(p, 2 * CSS_PAIRS), vec4(z - 1.0, z < 1.0 ? 1.0 : 0.0, 0.0, 0.0));
+}

@@ -1,0 +1,211 @@
+#version 450 core
+// `css` visibility (Annen et al. 2008, Figure 5) per camera pixel, from the prefiltered basis
+// images of basis.comp (mipmaps, or summed-area tables when FILTER_SAT):
+//  1. the initial kernel: the cone from the receiver to the light cut by the near plane;
+//  2. z_avg = filter(fbar z) / filter(fbar) from the CSM-Z and CSM basis over that kernel;
+//  3. the final kernel D (d - z_avg) / (d z_avg) (PCSS), and the filtered complementary test
+//     there, with ringing suppression (scale about 1/2, shift, clamp) and contact sharpening
+//     v^p, p = 1 + A exp(-B (d - z_avg)).
+// Diagnostics: colour 1 = z_avg (normalised depth; 0 where no blocker), colour 2 = the final
+// kernel's width in shadow-map texels along its wider axis.
+#ifndef FILTER_SAT
+#define FILTER_SAT 0
+#endif
+#ifndef MAX_ANISO
+#define MAX_ANISO 8
+#endif
+#ifndef MIP_TAPS
+#define MIP_TAPS 2
+#endif
+#ifndef SEARCH_TAPS
+#define SEARCH_TAPS 1  // mipmap taps per side in the blocker searches: an average needs less
+#endif
+#ifndef SEARCH_STEPS
+#define SEARCH_STEPS 0
+#endif
+#include "techniques/css/basis_layout.glsl"
+
+in vec2 v_uv;
+layout(binding = 0) uniform sampler2D u_position;
+layout(binding = 1) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
+layout(binding = 2) uniform sampler2D u_normal;
+
+uniform vec3 u_light_centre;
+uniform vec3 u_light_right;
+uniform vec3 u_light_up;
+uniform vec3 u_light_forward;
+uniform vec2 u_light_size;   // D along right and up
+uniform vec2 u_window_lo;    // the map's window at distance 1 in the light's frame
+uniform vec2 u_window_size;
+uniform float u_near;        // the nearest caster's distance: the filter widths' near plane
+uniform float u_depth_near;  // distances of normalised depth 0 and 1 (csm_maps.h DepthRange)
+uniform float u_depth_far;
+uniform float u_map_size;    // N
+uniform float u_ring_scale;  // ringing suppression: s = clamp(scale (F - 1/2) + 1/2, 0, 1)
+uniform float u_ring_shift;  // the test is evaluated at d - shift
+uniform float u_sharpen_a;   // contact sharpening v^p, p = 1 + A exp(-B (d - z_avg))
+uniform float u_sharpen_b;
+
+layout(location = 0) out vec4 o_visibility;
+layout(location = 1) out vec4 o_z_avg;
+layout(location = 2) out vec4 o_filter_width;
+
+// A box kernel centred at C with size S (both in texels of the N x N map), prepared once and
+// applied to each basis layer.
+#if FILTER_SAT
+struct Kernel {
+    vec2 lo, hi;  // the box clipped to the map, in SAT texture coordinates
+    float inv_area;
+};
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
+    // Outside the map every (centred) basis value is 0: clip the box, divide by its full area.
+    float n1 = u_map_size + 1.0;
+    Kernel k;
+    k.lo = (clamp(c - 0.5 * s, 0.0, u_map_size) + 0.5) / n1;
+    k.hi = (clamp(c + 0.5 * s, 0.0, u_map_size) + 0.5) / n1;
+    k.inv_area = 1.0 / (s.x * s.y);
+    return k;
+}
+// The table holds G at integer corners (row and column 0 are zero); bilinear filtering of it
+// at a fractional corner is the exact integral of the piecewise-constant image.
+vec4 boxMean(Kernel k, int layer) {
+    vec4 sum = texture(u_basis, vec3(k.hi, layer)) - texture(u_basis, vec3(k.lo.x, k.hi.y, layer)) -
+               texture(u_basis, vec3(k.hi.x, k.lo.y, layer)) + texture(u_basis, vec3(k.lo, layer));
+    return sum * k.inv_area;
+}
+#else
+struct Kernel {
+    vec2 first, step;  // a grid of taps, in texture coordinates
+    ivec2 taps;
+    float lod;
+};
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
+    // TAPS x TAPS trilinear taps per square of the shorter side (a rectangle gets more along
+    // its longer axis, at most MAX_ANISO times more: anisotropic filtering), each at GL's level
+    // for its footprint, log2(width): a grid of taps follows a box kernel more closely than one
+    // coarse lookup, whose bilinear tent is twice the box's width.
+    float tap = max(min(s.x, s.y) / float(taps_per_side), 1.0);
+    Kernel k;
+    k.taps = clamp(ivec2(ceil(s / tap - 0.01)), ivec2(1), ivec2(taps_per_side * MAX_ANISO));
+    vec2 footprint = s / vec2(k.taps);
+    k.lod = max(log2(max(footprint.x, footprint.y)), 0.0);
+    k.step = footprint / u_map_size;
+    k.first = (c - 0.5 * s + 0.5 * footprint) / u_map_size;
+    return k;
+}
+vec4 boxMean(Kernel k, int layer) {
+    vec4 sum = vec4(0.0);
+    for (int y = 0; y < k.taps.y; ++y)
+        for (int x = 0; x < k.taps.x; ++x)
+            sum += textureLod(u_basis, vec3(k.first + vec2(x, y) * k.step, layer), k.lod);
+    return sum / float(k.taps.x * k.taps.y);
+}
+#endif
+
+// (sin, cos)(c_k ds) / c_k for k = 2i+1, 2i+2: the weights of basis layer pair I.
+vec4 cssWeights(int i, float ds) {
+    float c1 = cssCoefficient(2 * i + 1), c2 = cssCoefficient(2 * i + 2);
+    vec4 w = vec4(sin(c1 * ds) / c1, cos(c1 * ds) / c1, sin(c2 * ds) / c2, cos(c2 * ds) / c2);
+    return 2 * i + 2 > ORDER ? vec4(w.xy, 0.0, 0.0) : w;
+}
+
+// The filtered complementary test fbar (1 = blocked) over kernel K at shifted receiver depth
+// DS, given EMPTY = fbar(ds, 1), the test of an empty texel; and, when WITH_Z, the filtered
+// fbar z (CSM-Z). The basis is
+// stored minus its empty-texel value, so the series sums give sum_i w_i (fbar(d, z_i) - EMPTY)
+// over the kernel; adding EMPTY back for the covered texels only (coverage from the z layer)
+// gives the sum over casters alone. An empty texel never blocks, so it adds exactly 0 instead
+// of the truncated series' ringing, which would swamp a thin caster in a wide kernel.
+vec2 filteredTest(Kernel k, float ds, float empty, bool with_z) {
+    float f = 0.0, fz = 0.0;
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        vec4 w = cssWeights(i, ds);
+        vec4 b = boxMean(k, i);  // cos, sin, cos, sin
+        f += 2.0 * (w.x * b.x - w.y * b.y + w.z * b.z - w.w * b.w);
+        if (with_z) {
+            vec4 bz = boxMean(k, CSS_PAIRS + i);
+            fz += 2.0 * (w.x * bz.x - w.y * bz.y + w.z * bz.z - w.w * bz.w);
+        }
+    }
+    vec2 z_coverage = boxMean(k, 2 * CSS_PAIRS).xy;  // mean of (z - 1), coverage
+    f += z_coverage.y * empty;
+    fz += 0.5 * z_coverage.x + z_coverage.y * empty;
+    return vec2(f, fz);
+}
+
+// The fraction of the light above the tangent plane of receiver P (normal N): the part below
+// is hidden by the receiver's own surface, as every light-sample shadow map sees it for a
+// closed object. The plane cuts the rectangle along a line; the covered length of each of 16
+// strips across the light is exact, the sum over strips a midpoint rule.
+float aboveHorizon(vec3 p, vec3 n) {
+    vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right + u_light_size.y * u_light_up);
+    float h0 = dot(corner - p, n);
+    float hx = u_light_size.x * dot(u_light_right, n), hy = u_light_size.y * dot(u_light_up, n);
+    if (h0 >= 0.0 && h0 + hx >= 0.0 && h0 + hy >= 0.0 && h0 + hx + hy >= 0.0) return 1.0;
+    float sum = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        float h = h0 + hy * (float(i) + 0.5) / 16.0;  // height at the strip's start (x = 0)
+        // Length of {x in [0, 1]: h + hx x > 0}.
+        float len = abs(hx) < 1e-9 ? step(0.0, h)
+                                   : clamp(hx > 0.0 ? 1.0 + h / hx : -h / hx, 0.0, 1.0);
+        sum += len;
+    }
+    return sum / 16.0;
+}
+
+void main() {
+    ivec2 pix = ivec2(gl_FragCoord.xy);
+    vec4 pos = texelFetch(u_position, pix, 0);
+    if (pos.w == 0.0) discard;
+    o_visibility = vec4(1.0, 0.0, 0.0, 0.0);
+    o_z_avg = vec4(0.0);
+    o_filter_width = vec4(0.0);
+    vec3 dl = pos.xyz - u_light_centre;
+    float zw = dot(dl, u_light_forward);
+    float horizon = aboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz));
+    o_visibility = vec4(horizon, 0.0, 0.0, 0.0);
+    if (zw <= u_near || horizon == 0.0) return;  // nearer than every caster, or facing away
+    vec2 texels_per_tan = u_map_size / u_window_size;
+    vec2 c = ((vec2(dot(dl, u_light_right), dot(dl, u_light_up)) / zw) - u_window_lo) *
+             texels_per_tan;
+    float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
+    float ds = max(d - u_ring_shift, 0.0);
+
+    // fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k = 1/2 - 2 sum_k sin(c_k ds) / c_k,
+    // since sin(c_k (x - 1)) = -sin(c_k x) for odd multiples c_k of pi.
+    float empty = 0.5;
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        vec4 w = cssWeights(i, ds);
+        empty -= 2.0 * (w.x + w.z);
+    }
+
+    // Stage 1: the search kernel where the cone to the light crosses the near plane.
+    vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
+    Kernel k0 = makeKernel(c, w0, SEARCH_TAPS);
+    // No caster under the search kernel: nothing can block (empty texels add exactly 0).
+    if (boxMean(k0, 2 * CSS_PAIRS).y <= 1e-6) return;
+    vec2 search = filteredTest(k0, ds, empty, true);
+    if (search.x < 1e-3) return;  // no blocker in the search area
+    // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
+    // cone cut at the plane of the current z_avg instead of the near plane (the paper's
+    // suggested iteration, section 3.2), which drops blockers outside the receiver's cone.
+    float z_avg = clamp(search.y / search.x, 0.0, d);
+    float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
+    for (int i = 0; i < SEARCH_STEPS; ++i) {
+        vec2 w = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
+        vec2 refined = filteredTest(makeKernel(c, w, SEARCH_TAPS), ds, empty, true);
+        if (refined.x < 1e-3) break;  // keep the last estimate
+        z_avg = clamp(refined.y / refined.x, 0.0, d);
+        zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
+    }
+    // Stage 3: the final kernel and the filtered test.
+    // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
+    // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
+    vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
+    float f = filteredTest(makeKernel(c, w1, MIP_TAPS), ds, empty, false).x;
+    float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
+    float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
+    o_visibility = vec4(horizon * pow(1.0 - s, p), 0.0, 0.0, 0.0);
+    o_z_avg = vec4(z_avg, 0.0, 0.0, 0.0);
+    o_filter_width = vec4(max(w1.x, w1.y), 0.0, 0.0, 0.0);
+}

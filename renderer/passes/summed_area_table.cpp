@@ -1,0 +1,30 @@
+// Summed-area tables by compute: see summed_area_table.h.
+#include "renderer/passes/summed_area_table.h"
+
+namespace penumbra::passes {
+
+SummedAreaTable::SummedAreaTable(int size, int layers, const char* label)
+    : size_(size),
+      layers_(layers),
+      table_(gl::createTexture2DArray(GL_RGBA32F, size + 1, size + 1, layers, label)),
+      rows_(gl::buildProgram("sat rows", {"passes/sat_rows.comp"})),
+      columns_(gl::buildProgram("sat columns", {"passes/sat_columns.comp"})) {
+    glTextureParameteri(table_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(table_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+void SummedAreaTable::build(const gl::Texture& source) {
+    const GLuint groups = static_cast<GLuint>((size_ + 1 + 63) / 64);
+    glUseProgram(rows_.id());
+    glBindImageTexture(0, source.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(groups, static_cast<GLuint>(layers_), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUseProgram(columns_.id());
+    glBindImageTexture(0, table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glDispatchCompute(groups, static_cast<GLuint>(layers_), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::passes

@@ -1,0 +1,82 @@
+// The prefiltered maps of `css`: see csm_maps.h.
+#include "renderer/techniques/css/csm_maps.h"
+
+#include <algorithm>
+#include <bit>
+#include <string>
+
+#include "renderer/core/error.h"
+
+namespace penumbra::techniques::css {
+
+ssm::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
+                           const passes::Bounds& scene) {
+    ssm::LightWindow w = ssm::windowOf(light, casters);
+    if (w.empty()) return w;
+    w.far = std::max(w.far, ssm::windowOf(light, scene).far);
+    return w;
+}
+
+DepthRange depthRange(const ssm::LightWindow& w, int order, float shift) {
+    const float m = std::min(shift + 0.5f / static_cast<float>(order), 0.3f);
+    const float pad = m * (w.far - w.near) / (1.0f - 2.0f * m);
+    return {w.near - pad, w.far + pad};
+}
+
+CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
+    : map_size_(map_size),
+      layers_(basisLayers(order)),
+      depth_(map_size, "css shadow map"),
+      depth_program_(gl::buildProgram("css depth",
+                                      {"techniques/ssm/depth.vert", "techniques/ssm/depth.frag"})),
+      basis_program_(gl::buildProgram("css basis", {"techniques/css/basis.comp"},
+                                      {{"ORDER", std::to_string(order)}})) {
+    const int levels = mipmap ? std::bit_width(static_cast<unsigned>(map_size)) : 1;
+    basis_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "css basis images");
+    glTextureStorage3D(basis_.id(), levels, GL_RGBA32F, map_size, map_size, layers_);
+    glTextureParameteri(basis_.id(), GL_TEXTURE_MIN_FILTER,
+                        mipmap ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTextureParameteri(basis_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Centred values are 0 for empty texels, so outside the map is the zero border colour.
+    const float border[4] = {0, 0, 0, 0};
+    glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glTextureParameterfv(basis_.id(), GL_TEXTURE_BORDER_COLOR, border);
+    if (sat) sat_ = std::make_unique<passes::SummedAreaTable>(map_size, layers_, "css basis SAT");
+}
+
+void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
+                          const ssm::LightWindow& w, const DepthRange& range) {
+    depth_.render(scene, depth_program_, passes::GpuScene::Filter::Casters, w.viewProj(light),
+                  light, range.near, 1.0f / (range.far - range.near), false);
+}
+
+void CsmMaps::buildBasis() {
+    glUseProgram(basis_program_.id());
+    glBindTextureUnit(0, depth_.depth.id());
+    glBindImageTexture(0, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+void CsmMaps::prefilter(Filter filter) {
+    if (filter == Filter::Mipmap) {
+        glGenerateTextureMipmap(basis_.id());
+        return;
+    }
+    if (!sat_) throw RuntimeError("css: summed-area tables were not prepared");
+    sat_->build(basis_);
+}
+
+const gl::Texture& CsmMaps::filtered(Filter filter) const {
+    if (filter == Filter::Sat) {
+        if (!sat_) throw RuntimeError("css: summed-area tables were not prepared");
+        return sat_->table();
+    }
+    return basis_;
+}
+
+}  // namespace penumbra::techniques::css

@@ -1,0 +1,63 @@
+// The prefiltered maps of `css` for one light: a linear-depth shadow map from the light's
+// centre, its CSM and CSM-Z basis images (glsl/techniques/css/basis.comp) in one RGBA32F array,
+// and their prefiltering by a mip chain or by summed-area tables.
+#pragma once
+
+#include <memory>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/summed_area_table.h"
+#include "renderer/techniques/ssm/light_windows.h"
+#include "renderer/techniques/ssm/targets.h"
+
+namespace penumbra::techniques::css {
+
+// Layers of the basis array for order M: ceil(M/2) CSM, ceil(M/2) CSM-Z, one z.
+constexpr int basisLayers(int order) {
+    return 2 * ((order + 1) / 2) + 1;
+}
+
+// The light-centred view of the map: the casters' window (x, y) with a depth range from the
+// nearest caster to the farthest point of the scene, so every receiver has depth in [0, 1].
+ssm::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
+                           const passes::Bounds& scene);
+
+// The depth normalisation of the map: real depths fill [m, 1 - m], m = min(shift + 0.5 / M,
+// 0.3), and empty texels hold 1. The Fourier test is periodic (period 2 in d - z) and rings
+// across a band of about 1 / (2M) around its jumps at d - z = 0 and -1; the margin keeps
+// every receiver against an empty texel (d - 1 in [m - 1, -m], evaluated at d - shift) clear
+// of both.
+struct DepthRange {
+    float near = 0.0f, far = 1.0f;  // distances along the light's forward axis of depth 0 and 1
+};
+DepthRange depthRange(const ssm::LightWindow& window, int order, float shift);
+
+class CsmMaps {
+public:
+    enum class Filter { Mipmap, Sat };
+    // Resources for a MAP_SIZE^2 map of order ORDER; SAT and MIPMAP say which prefilters to
+    // prepare (both when a scene mixes square and rectangular lights).
+    CsmMaps(int map_size, int order, bool mipmap, bool sat);
+
+    // The caster depth map seen through WINDOW.
+    void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
+                     const ssm::LightWindow& window, const DepthRange& range);
+    // The basis images of the depth map (centred on their empty-texel values).
+    void buildBasis();
+    // Prefilters the basis with FILTER; filtered(FILTER) is then ready for lookups.
+    void prefilter(Filter filter);
+    const gl::Texture& filtered(Filter filter) const;
+
+    int mapSize() const { return map_size_; }
+
+private:
+    int map_size_, layers_;
+    ssm::DepthTarget depth_;
+    gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
+    std::unique_ptr<passes::SummedAreaTable> sat_;
+    gl::Program depth_program_, basis_program_;
+};
+
+}  // namespace penumbra::techniques::css

@@ -1,0 +1,126 @@
+// `css`: convolution soft shadows (Annen et al. 2008). A light-centred shadow map is expanded
+// into Fourier basis images (CSM) and depth-weighted ones (CSM-Z), prefiltered by mipmaps or
+// summed-area tables; each pixel finds its average blocker depth and filters the shadow test
+// with a kernel of the penumbra's width (glsl/techniques/css/visibility.frag).
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "renderer/passes/fullscreen.h"
+#include "renderer/techniques/css/csm_maps.h"
+#include "renderer/techniques/css/css_settings.h"
+#include "renderer/techniques/environment_lights.h"
+#include "renderer/techniques/registry_entries.h"
+
+namespace penumbra::techniques {
+namespace {
+
+using css::CsmMaps;
+
+class Css final : public Technique {
+public:
+    explicit Css(const Params& p) : settings_(css::cssSettings(p)) {}
+
+    void prepare(const gl::ContextInfo&, const passes::GpuScene&) override {
+        maps_.reset();
+        programs_ = {};
+    }
+
+    void render(render::FrameContext& ctx) override {
+        const scene::RectLight& light = ctx.currentLight();
+        const CsmMaps::Filter filter = css::filterFor(settings_, light);
+        ensureResources(filter);
+        const ssm::LightWindow window =
+            css::mapWindow(light, ctx.gpu.casterBounds(), ctx.gpu.sceneBounds());
+        const css::DepthRange range =
+            css::depthRange(window, settings_.order, settings_.ring_shift);
+        if (!window.empty()) {
+            ctx.pass("css_shadow_map", [&] { maps_->renderDepth(ctx.gpu, light, window, range); });
+            ctx.pass("css_basis", [&] { maps_->buildBasis(); });
+            ctx.pass(filter == CsmMaps::Filter::Sat ? "css_sat" : "css_mipmap",
+                     [&] { maps_->prefilter(filter); });
+        }
+        ctx.pass("css_visibility", [&] { visibility(ctx, light, window, range, filter); });
+        ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + (window.empty() ? 0 : 1);
+        ctx.stats["order"] = settings_.order;
+    }
+
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        return {{"z_avg", DiagnosticChannel::Combine::Max},
+                {"filter_width", DiagnosticChannel::Combine::Max}};
+    }
+
+private:
+    // Maps and programs on first use: a scene of square lights never builds SAT resources.
+    void ensureResources(CsmMaps::Filter filter) {
+        const bool sat = filter == CsmMaps::Filter::Sat;
+        gl::Program& program = programs_[sat ? 1 : 0];
+        if (!maps_ || (sat && !has_sat_) || (!sat && !has_mipmap_)) {
+            has_sat_ |= sat;
+            has_mipmap_ |= !sat;
+            maps_ = std::make_unique<CsmMaps>(settings_.map_size, settings_.order, has_mipmap_,
+                                              has_sat_);
+        }
+        if (!program)
+            program = gl::buildProgram("css visibility",
+                                       {"passes/fullscreen.vert", "techniques/css/visibility.frag"},
+                                       {{"ORDER", std::to_string(settings_.order)},
+                                        {"FILTER_SAT", sat ? "1" : "0"},
+                                        {"MAX_ANISO", std::to_string(settings_.max_aniso)},
+                                        {"MIP_TAPS", std::to_string(settings_.mip_taps)},
+                                        {"SEARCH_STEPS", std::to_string(settings_.search_steps)}});
+    }
+
+    void visibility(render::FrameContext& ctx, const scene::RectLight& light,
+                    const ssm::LightWindow& w, const css::DepthRange& range,
+                    CsmMaps::Filter filter) {
+        ctx.bindOutput();
+        const float lit[4] = {1, 0, 0, 0}, zero[4] = {0, 0, 0, 0};
+        glClearBufferfv(GL_COLOR, 0, lit);
+        glClearBufferfv(GL_COLOR, 1, zero);
+        glClearBufferfv(GL_COLOR, 2, zero);
+        if (w.empty()) return;  // no caster in front of the light
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        const gl::Program& p = programs_[filter == CsmMaps::Filter::Sat ? 1 : 0];
+        glUseProgram(p.id());
+        glBindTextureUnit(0, ctx.gbuffer.position().id());
+        glBindTextureUnit(1, maps_->filtered(filter).id());
+        glBindTextureUnit(2, ctx.gbuffer.normal().id());
+        gl::setUniform(p, "u_light_centre", light.position);
+        gl::setUniform(p, "u_light_right", light.right());
+        gl::setUniform(p, "u_light_up", light.upAxis());
+        gl::setUniform(p, "u_light_forward", light.forward());
+        gl::setUniform(p, "u_light_size", light.size);
+        gl::setUniform(p, "u_window_lo", w.lo);
+        gl::setUniform(p, "u_window_size", w.size);
+        gl::setUniform(p, "u_near", w.near);
+        gl::setUniform(p, "u_depth_near", range.near);
+        gl::setUniform(p, "u_depth_far", range.far);
+        gl::setUniform(p, "u_map_size", static_cast<float>(settings_.map_size));
+        gl::setUniform(p, "u_ring_scale", settings_.ring_scale);
+        gl::setUniform(p, "u_ring_shift", settings_.ring_shift);
+        gl::setUniform(p, "u_sharpen_a", settings_.sharpen_a);
+        gl::setUniform(p, "u_sharpen_b", settings_.sharpen_b);
+        fullscreen_.draw();
+        glUseProgram(0);
+    }
+
+    css::CssSettings settings_;
+    std::unique_ptr<CsmMaps> maps_;
+    bool has_mipmap_ = false, has_sat_ = false;
+    std::array<gl::Program, 2> programs_;  // visibility: mipmap, SAT
+    passes::Fullscreen fullscreen_;
+};
+
+}  // namespace
+
+const TechniqueInfo kCssTechnique = {
+    "css",
+    "convolution soft shadows (Annen et al. 2008): prefiltered Fourier basis of the shadow test",
+    css::kCssParams,
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Css>(p); },
+    fittedEnvironmentLights};
+
+}  // namespace penumbra::techniques

@@ -1,0 +1,167 @@
+// `css` (convolution soft shadows, Annen et al. 2008) on the default scene and the floating
+// square of closed_form.json: shadow-region error against `reference` N = 32 and the closed
+// form, contact shadows, mipmap and SAT prefiltering, rectangular lights, diagnostics.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "gl_test_env.h"
+
+using penumbra::output::Image;
+using penumbra::testing::channel;
+using penumbra::testing::floorShadowMae;
+using penumbra::testing::renderScene;
+
+namespace {
+
+// The css technique block with EXTRA keys (JSON members, comma-led).
+std::string css(const std::string& extra = "") {
+    return R"({"name": "css")" + extra + "}";
+}
+
+// `reference` N = 32 of SCENE (with OVERRIDES), rendered once per test binary.
+const Image& truth(const std::string& scene, const std::string& light_size = "") {
+    static std::map<std::string, Image> cache;
+    const std::string key = scene + light_size;
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+    std::vector<penumbra::scene::Override> o = {
+        {"technique", R"({"name": "reference", "samples": 32, "map_size": 512})"}};
+    if (!light_size.empty()) o.push_back({"lights.0.size", light_size});
+    return cache.emplace(key, renderScene(scene, o)).first->second;
+}
+
+// Mean visibility over the floor pixels within 0.2 m of the pillar's footprint (0.12 m square
+// at x = -0.9, z = 0.5 in the default scene) that REF has in shadow.
+double contactMean(const Image& ref, const Image& img) {
+    const auto& vr = channel(ref, "visibility");
+    const auto& v = channel(img, "visibility");
+    const auto& id = channel(ref, "id");
+    const auto& px = channel(ref, "P.X");
+    const auto& pz = channel(ref, "P.Z");
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        const double dx = std::max(std::fabs(px[i] + 0.9) - 0.06, 0.0);
+        const double dz = std::max(std::fabs(pz[i] - 0.5) - 0.06, 0.0);
+        if (id[i] != 0.0f || std::hypot(dx, dz) > 0.2 || vr[i] >= 0.999f) continue;
+        sum += v[i];
+        ++n;
+    }
+    EXPECT_GT(n, 20) << "the contact region should be visible";
+    return n ? sum / static_cast<double>(n) : 1.0;
+}
+
+}  // namespace
+
+TEST(CssGL, DefaultSceneMatchesReference) {
+    const Image& ref = truth("adaptive_default.json");
+    for (const char* filter : {"mipmap", "sat"}) {
+        auto img =
+            renderScene("adaptive_default.json",
+                        {{"technique", css(std::string(R"(, "filter": ")") + filter + "\"")}});
+        const double mae = floorShadowMae(ref, img);
+        std::printf("css %s, default scene: floor shadow-region MAE %.4f vs reference N=32\n",
+                    filter, mae);
+        // The issue's bound. Measured 0.054 (mipmap) and 0.055 (sat) at 192 x 144; the rest is
+        // the single blocker depth per pixel (PCSS), wrong where blockers of very different
+        // depths share a kernel (the pillar's long shadow).
+        EXPECT_LE(mae, 0.06) << filter;
+    }
+}
+
+TEST(CssGL, ContactShadowsAreNotLighterThanReference) {
+    const Image& ref = truth("adaptive_default.json");
+    auto sat = renderScene("adaptive_default.json", {{"technique", css()}});
+    auto mip =
+        renderScene("adaptive_default.json", {{"technique", css(R"(, "filter": "mipmap")")}});
+    auto unsharp =
+        renderScene("adaptive_default.json", {{"technique", css(R"(, "sharpen_a": 0)")}});
+    const double r = contactMean(ref, ref), s = contactMean(ref, sat), m = contactMean(ref, mip),
+                 u = contactMean(ref, unsharp);
+    std::printf(
+        "pillar contact: reference %.3f, css sat %.3f, mipmap %.3f, without sharpening %.3f\n", r,
+        s, m, u);
+    // Measured 0.470 (reference), 0.444 (sat) and 0.509 (mipmap): 0.03 allows for the 53-pixel
+    // sample's noise, 0.05 for the mipmaps' coarser blocker search (one trilinear tap per
+    // layer); both catch the leak the paper's sharpening exists for (0.88 without it).
+    EXPECT_LE(s, r + 0.03);
+    EXPECT_LE(m, r + 0.05);
+    EXPECT_GT(u, s + 0.05) << "contact sharpening should darken the contact";
+}
+
+TEST(CssGL, FloatingSquareMatchesReferenceAndClosedForm) {
+    const Image& ref = truth("closed_form.json");
+    for (const char* filter : {"mipmap", "sat"}) {
+        auto img =
+            renderScene("closed_form.json",
+                        {{"technique", css(std::string(R"(, "filter": ")") + filter + "\"")}});
+        const double mae = floorShadowMae(ref, img);
+        const double closed = penumbra::testing::closedFormShadowMae(img, 0.5, 500);
+        std::printf("css %s, floating square: MAE %.4f vs reference, %.4f vs closed form\n", filter,
+                    mae, closed);
+        // A plane parallel to the light is PCSS's exact case: one blocker depth, a box kernel.
+        // Measured 0.011 (mipmap: 2 x 2 trilinear taps approximate the box) and 0.008 (SAT).
+        EXPECT_LE(mae, 0.025) << filter;
+        EXPECT_LE(closed, 0.03) << filter;
+    }
+}
+
+TEST(CssGL, RectangularLightThroughSatAndAnisotropicMipmaps) {
+    const std::string size = "[1.6,0.5]";
+    const Image& ref = truth("closed_form.json", size);
+    double mae[2];
+    const char* filters[2] = {"auto", "mipmap"};
+    for (int i = 0; i < 2; ++i) {
+        auto img =
+            renderScene("closed_form.json",
+                        {{"technique", css(std::string(R"(, "filter": ")") + filters[i] + "\"")},
+                         {"lights.0.size", size}});
+        mae[i] = floorShadowMae(ref, img);
+        std::printf("css %s, 1.6 x 0.5 light: MAE %.4f vs reference\n", filters[i], mae[i]);
+    }
+    // auto picks SATs for a rectangle: an exact box of the light's aspect; anisotropic mipmaps
+    // (taps along the long axis) come close. Measured 0.0083 and 0.0090.
+    EXPECT_LE(mae[0], 0.025);
+    EXPECT_LE(mae[1], 0.03);
+}
+
+TEST(CssGL, OrderAndMapSizeAreHonoured) {
+    const Image& ref = truth("closed_form.json");
+    for (int order : {1, 2, 7, 16}) {
+        auto img = renderScene("closed_form.json",
+                               {{"technique", css(R"(, "order": )" + std::to_string(order))}});
+        const double mae = floorShadowMae(ref, img);
+        std::printf("css order %d: MAE %.4f\n", order, mae);
+        // Measured 0.011, 0.018, 0.004 and 0.002 with a 256 map: the shift and clamp make even
+        // a one-term series a clean enough step for a planar occluder far above the floor.
+        EXPECT_LE(mae, 0.03) << order;
+    }
+    auto small = renderScene("closed_form.json", {{"technique", css(R"(, "map_size": 64)")}});
+    EXPECT_LE(floorShadowMae(ref, small), 0.05);  // a wide penumbra needs few texels
+}
+
+TEST(CssGL, DiagnosticsDescribeTheKernel) {
+    auto img = renderScene("closed_form.json", {{"technique", css()}});
+    const auto& v = channel(img, "visibility");
+    const auto& z = channel(img, "css.z_avg");
+    const auto& w = channel(img, "css.filter_width");
+    const auto& id = channel(img, "id");
+    long shadowed = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        EXPECT_GE(z[i], 0.0f);
+        EXPECT_LE(z[i], 1.0f);
+        if (id[i] != 0.0f || v[i] >= 0.99f) continue;
+        ++shadowed;
+        // Floor under the square: the blocker is the square (nearer than the floor), and the
+        // final kernel is its penumbra, D (d - z) / (d z) = 1 * 1.5 / (3 * 1.5) = 1/3 in
+        // tangent units: about 320 texels of the 512 map, which spans the square (0.53).
+        EXPECT_GT(z[i], 0.0f);
+        EXPECT_GT(w[i], 50.0f);
+    }
+    EXPECT_GT(shadowed, 500);
+}
