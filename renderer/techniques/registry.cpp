@@ -7,8 +7,8 @@
 namespace penumbra::techniques {
 
 std::span<const TechniqueInfo> allTechniques() {
-    static const std::array<TechniqueInfo, 4> all = {kHardTechnique, kReferenceTechnique,
-                                                     kAdaptiveTechnique, kSsmTechnique};
+    static const std::array<TechniqueInfo, 5> all = {
+        kHardTechnique, kReferenceTechnique, kAdaptiveTechnique, kSsmTechnique, kBitmaskTechnique};
     return all;
 }
 

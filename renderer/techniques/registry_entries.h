@@ -8,4 +8,5 @@ extern const TechniqueInfo kHardTechnique;
 extern const TechniqueInfo kReferenceTechnique;
 extern const TechniqueInfo kSsmTechnique;
 extern const TechniqueInfo kAdaptiveTechnique;
+extern const TechniqueInfo kBitmaskTechnique;
 }  // namespace penumbra::techniques
