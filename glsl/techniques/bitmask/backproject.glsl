@@ -3,7 +3,12 @@
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
 // (BITMASK 1, four half-plane table lookups) or adds its area (BITMASK 0). GAP_FILL 1 extends
 // a micropatch towards a farther neighbour micropatch so their projections leave no gap.
-// Needs search.glsl.
+// MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
+// the extent and depth come from their own mip chains (section 5.2). Needs search.glsl.
+#if MICRORECTS
+layout(binding = 9) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
+layout(binding = 10) uniform sampler2D u_rect_depth;
+#endif
 #if BITMASK
 layout(binding = 6) uniform usampler2D u_masks;  // rows 0-1: x >= u words, rows 2-3: y >= v
 uniform int u_mask_resolution;
@@ -36,13 +41,21 @@ float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
 #endif
     for (int y = r.y; y <= r.w; ++y)
         for (int x = r.x; x <= r.z; ++x) {
+#if MICRORECTS
+            float zo = texelFetch(u_rect_depth, ivec2(x, y), level).r;
+            if (zo >= pz) continue;
+            ++count;
+            vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
+            vec2 w0 = u_win_lo + e.xy * u_texel, w1 = u_win_lo + (e.zw + 1.0) * u_texel;
+#else
             float zo = texelFetch(u_hsm, ivec2(x, y), level).r;
             if (zo >= pz) continue;
             ++count;
             vec2 w0 = u_win_lo + vec2(x, y) * t, w1 = w0 + t;
+#endif
             vec2 l0 = vec2(onLight(w0.x, p.x, p.z, zo), onLight(w0.y, p.y, p.z, zo));
             vec2 l1 = vec2(onLight(w1.x, p.x, p.z, zo), onLight(w1.y, p.y, p.z, zo));
-#if GAP_FILL
+#if GAP_FILL && !MICRORECTS
             float zl = x > 0 ? texelFetch(u_hsm, ivec2(x - 1, y), level).r : pz;
             float zr = x < n - 1 ? texelFetch(u_hsm, ivec2(x + 1, y), level).r : pz;
             float zd = y > 0 ? texelFetch(u_hsm, ivec2(x, y - 1), level).r : pz;

@@ -14,6 +14,7 @@
 #include "renderer/passes/fullscreen.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/bitmask/loq_targets.h"
+#include "renderer/techniques/bitmask/microrects.h"
 #include "renderer/techniques/bitmask/sample_pattern.h"
 #include "renderer/techniques/registry_entries.h"
 #include "renderer/techniques/ssm/light_windows.h"
@@ -29,6 +30,8 @@ constexpr std::array kBitmaskParams = {
     enumParam("accel", "ysm", "hsm|mssm|ysm",
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
     intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
+    enumParam("occluders", "micropatch", "micropatch|microrect",
+              "micro-occluders: shadow-map texels, or microrects merged per level (5.2)"),
     enumParam("visibility", "bitmask", "bitmask|area",
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
@@ -69,6 +72,7 @@ public:
         : map_size_(p.getInt("map_size")),
           accel_(accelFromName(p.getString("accel"))),
           ysm_size_(p.getInt("ysm_size")),
+          microrects_(p.getString("occluders") == "microrect"),
           use_bitmask_(p.getString("visibility") == "bitmask"),
           bits_(p.getInt("bits")),
           pattern_(bitmask::patternFromName(p.getString("pattern"))),
@@ -109,9 +113,11 @@ public:
                             GL_UNSIGNED_BYTE, receives.data());
         ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
         if (use_bitmask_) uploadMasks();
+        if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
         const gl::Defines defines = {{"ACCEL", std::to_string(static_cast<int>(accel_))},
                                      {"BITMASK", use_bitmask_ ? "1" : "0"},
                                      {"GAP_FILL", gap_fill_ ? "1" : "0"},
+                                     {"MICRORECTS", microrects_ ? "1" : "0"},
                                      {"BLEND", smooth_ ? "1" : "0"}};
         classify_ = gl::buildProgram("bitmask classify",
                                      {"passes/fullscreen.vert", "techniques/bitmask/classify.frag"},
@@ -140,6 +146,7 @@ public:
             if (accel_ != Accel::Hsm)
                 ctx.pass(accel_ == Accel::Ysm ? "bitmask_ysm" : "bitmask_mssm",
                          [&] { ranges_->buildMssm(); });
+            if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
         }
         ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
         if (smooth_) ctx.pass("bitmask_smooth", [&] { smoothLoq(ctx); });
@@ -249,6 +256,10 @@ private:
         }
         glBindTextureUnit(7, targets_->area().id());
         glBindTextureUnit(8, targets_->loq(0).id());
+        if (microrects_) {
+            glBindTextureUnit(9, rects_->extent().id());
+            glBindTextureUnit(10, rects_->depth().id());
+        }
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, stats_.id());
         fullscreen_.draw();
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -281,6 +292,7 @@ private:
     int map_size_;
     Accel accel_;
     int ysm_size_;
+    bool microrects_;
     bool use_bitmask_;
     int bits_;
     bitmask::Pattern pattern_;
@@ -297,6 +309,7 @@ private:
     float normal_offset_, depth_bias_;
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<bitmask::LoqTargets> targets_;
+    std::unique_ptr<bitmask::MicroRects> rects_;
     gl::Texture receives_, masks_;
     gl::Program classify_, smooth_program_, visibility_;
     gl::Buffer stats_;
