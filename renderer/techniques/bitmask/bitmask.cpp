@@ -39,7 +39,8 @@ constexpr std::array kBitmaskParams = {
     intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
     boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)"),
     intParam("budget", 12, 0, 256,
-             "b_mo: at most b_mo x b_mo micro-occluders per pixel (0 = unlimited, else >= 2)"),
+             "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
+             "unlimited, else >= 2); blending also back-projects the finer floor level"),
     boolParam("budget_falloff", false,
               "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners"),
     intParam("budget_edge", 5, 2, 256, "b_mo at the image corners when budget_falloff is on"),
