@@ -20,6 +20,18 @@ uniform float u_sample_count;
 float onLight(float w, float p, float pz, float z) { return z * (w * pz - p) / (pz - z); }
 
 #if BITMASK
+// Visibility from an occlusion bitmask of u_sample_count bits in two halves.
+float maskVisibility(uvec4 m0, uvec4 m1) {
+    uvec4 bits = uvec4(bitCount(m0) + bitCount(m1));
+    return 1.0 - float(bits.x + bits.y + bits.z + bits.w) / u_sample_count;
+}
+#endif
+
+#if MICROQUADS
+#include "techniques/bitmask/microquads.glsl"
+#endif
+
+#if BITMASK
 int maskIndex(float u) {
     return clamp(int(ceil(u * float(u_mask_resolution) - 0.5)), 0, u_mask_resolution);
 }
@@ -28,12 +40,13 @@ int maskIndex(float u) {
 // Back-projects the micropatches of LEVEL in AREA (level-0 texels) for receiver P; returns
 // visibility, COUNT = micro-occluders back-projected.
 float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
+#if MICROQUADS
+    return backprojectQuads(p, pz, area, level, count);
+#endif
     count = 0;
     int n = u_map_size >> level;
-    float s = float(1 << level);
-    ivec4 r = clamp(ivec4(floor(area / s)), ivec4(0), ivec4(n - 1));
-    vec2 t = u_texel * s;
-    vec2 scale = 0.5 / u_light_half;
+    ivec4 r = levelRange(area, level, 1);
+    vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
 #if BITMASK
     uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
 #else
@@ -79,8 +92,7 @@ float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
 #endif
         }
 #if BITMASK
-    uvec4 bits = uvec4(bitCount(m0) + bitCount(m1));
-    return 1.0 - float(bits.x + bits.y + bits.z + bits.w) / u_sample_count;
+    return maskVisibility(m0, m1);
 #else
     return 1.0 - min(occluded, 1.0);
 #endif

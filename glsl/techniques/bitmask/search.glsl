@@ -125,3 +125,9 @@ vec2 depthRange(vec4 a, int align) {
     return mssmRange(r >> u_mssm_base);
 #endif
 }
+
+// The texels of LEVEL that hold area A (level-0 texels), clamped to [0, size - LAST].
+ivec4 levelRange(vec4 a, int level, int last) {
+    int n = u_map_size >> level;
+    return clamp(ivec4(floor(a / float(1 << level))), ivec4(0), ivec4(max(n - last, 0)));
+}

@@ -30,8 +30,9 @@ constexpr std::array kBitmaskParams = {
     enumParam("accel", "ysm", "hsm|mssm|ysm",
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
     intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
-    enumParam("occluders", "micropatch", "micropatch|microrect",
-              "micro-occluders: shadow-map texels, or microrects merged per level (5.2)"),
+    enumParam("occluders", "micropatch", "micropatch|microquad|microrect",
+              "micro-occluders: texels, quads between texel centres (bitmask only), or "
+              "microrects merged per level (5.2)"),
     enumParam("visibility", "bitmask", "bitmask|area",
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
@@ -67,6 +68,23 @@ Accel accelFromName(const std::string& name) {
     return name == "hsm" ? Accel::Hsm : name == "mssm" ? Accel::Mssm : Accel::Ysm;
 }
 
+// An RGBA32UI texture of WIDTH x 2 MASKS.size() / WIDTH texels: texel (i, 2 r + h) holds words
+// 4 h .. 4 h + 3 of mask r * WIDTH + i.
+gl::Texture maskTexture(const std::vector<bitmask::Mask>& masks, int width, const char* label) {
+    const int rows = static_cast<int>(masks.size()) / width;
+    std::vector<std::uint32_t> texels(masks.size() * bitmask::kMaskWords);
+    for (int r = 0; r < rows; ++r)
+        for (int h = 0; h < 2; ++h)
+            for (int i = 0; i < width; ++i)
+                for (int c = 0; c < 4; ++c)
+                    texels[((size_t(2 * r + h) * size_t(width)) + size_t(i)) * 4 + size_t(c)] =
+                        masks[size_t(r) * size_t(width) + size_t(i)][size_t(4 * h + c)];
+    gl::Texture t = gl::createTexture2D(GL_RGBA32UI, width, 2 * rows, label);
+    glTextureSubImage2D(t.id(), 0, 0, 0, width, 2 * rows, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                        texels.data());
+    return t;
+}
+
 class Bitmask final : public Technique {
 public:
     explicit Bitmask(const Params& p)
@@ -74,6 +92,7 @@ public:
           accel_(accelFromName(p.getString("accel"))),
           ysm_size_(p.getInt("ysm_size")),
           microrects_(p.getString("occluders") == "microrect"),
+          microquads_(p.getString("occluders") == "microquad"),
           use_bitmask_(p.getString("visibility") == "bitmask"),
           bits_(p.getInt("bits")),
           pattern_(bitmask::patternFromName(p.getString("pattern"))),
@@ -96,6 +115,8 @@ public:
             throw InputError("technique.ysm_size: must be a power of two up to map_size, got " +
                              std::to_string(ysm_size_));
         bitmask::sampleGrid(bits_);  // validates technique.bits
+        if (microquads_ && !use_bitmask_)
+            throw InputError("technique.occluders: microquad needs visibility \"bitmask\"");
         if (budget_ == 1) throw InputError("technique.budget: must be 0 (unlimited) or >= 2");
         // An unlimited budget uses level 0 everywhere: nothing to smooth or blend (Table 2).
         if (budget_ == 0) smooth_ = false;
@@ -119,6 +140,7 @@ public:
                                      {"BITMASK", use_bitmask_ ? "1" : "0"},
                                      {"GAP_FILL", gap_fill_ ? "1" : "0"},
                                      {"MICRORECTS", microrects_ ? "1" : "0"},
+                                     {"MICROQUADS", microquads_ ? "1" : "0"},
                                      {"BLEND", smooth_ ? "1" : "0"}};
         classify_ = gl::buildProgram("bitmask classify",
                                      {"passes/fullscreen.vert", "techniques/bitmask/classify.frag"},
@@ -163,21 +185,16 @@ public:
     }
 
 private:
-    // The half-plane tables as an RGBA32UI texture: rows 0-1 x >= u, rows 2-3 y >= v.
+    // The half-plane tables (texture rows 0-1: x >= u, rows 2-3: y >= v) and, for
+    // microquads, the edge tables (rows 2a, 2a + 1: angle a).
     void uploadMasks() {
-        const auto tables = bitmask::halfPlaneTables(bitmask::samplePoints(bits_, pattern_, seed_));
-        const int w = bitmask::kTableResolution + 1;
-        std::vector<std::uint32_t> texels(static_cast<size_t>(w) * 4 * 4);
-        for (int row = 0; row < 4; ++row)
-            for (int i = 0; i < w; ++i) {
-                const auto& mask = (row < 2 ? tables.x : tables.y)[size_t(i)];
-                for (int c = 0; c < 4; ++c)
-                    texels[(size_t(row) * size_t(w) + size_t(i)) * 4 + size_t(c)] =
-                        mask[size_t((row % 2) * 4 + c)];
-            }
-        masks_ = gl::createTexture2D(GL_RGBA32UI, w, 4, "bitmask half-plane masks");
-        glTextureSubImage2D(masks_.id(), 0, 0, 0, w, 4, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
-                            texels.data());
+        const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
+        auto tables = bitmask::halfPlaneTables(points);
+        tables.x.insert(tables.x.end(), tables.y.begin(), tables.y.end());
+        masks_ = maskTexture(tables.x, bitmask::kTableResolution + 1, "bitmask half-plane masks");
+        if (microquads_)
+            edges_ =
+                maskTexture(bitmask::edgeTable(points), bitmask::kEdgeOffsets, "bitmask edges");
     }
 
     // The uniforms and textures of search.glsl.
@@ -257,6 +274,11 @@ private:
         }
         glBindTextureUnit(7, targets_->area().id());
         glBindTextureUnit(8, targets_->loq(0).id());
+        if (microquads_) {
+            glBindTextureUnit(11, edges_.id());
+            gl::setUniform(p, "u_edge_angles", bitmask::kEdgeAngles);
+            gl::setUniform(p, "u_edge_offsets", bitmask::kEdgeOffsets);
+        }
         if (microrects_) {
             glBindTextureUnit(9, rects_->extent().id());
             glBindTextureUnit(10, rects_->depth().id());
@@ -293,7 +315,7 @@ private:
     int map_size_;
     Accel accel_;
     int ysm_size_;
-    bool microrects_;
+    bool microrects_, microquads_;
     bool use_bitmask_;
     int bits_;
     bitmask::Pattern pattern_;
@@ -311,7 +333,7 @@ private:
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<bitmask::LoqTargets> targets_;
     std::unique_ptr<bitmask::MicroRects> rects_;
-    gl::Texture receives_, masks_;
+    gl::Texture receives_, masks_, edges_;
     gl::Program classify_, smooth_program_, visibility_;
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;

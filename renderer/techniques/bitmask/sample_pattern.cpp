@@ -85,4 +85,36 @@ Mask rectMask(const HalfPlaneTables& t, glm::vec2 lo, glm::vec2 hi) {
     return m;
 }
 
+namespace {
+constexpr float kTwoPi = 6.28318530718f;
+constexpr float kHalfDiagonal = 0.70710678f;
+}  // namespace
+
+std::vector<Mask> edgeTable(const std::vector<glm::vec2>& points) {
+    std::vector<Mask> table(size_t(kEdgeAngles) * kEdgeOffsets, Mask{});
+    for (int a = 0; a < kEdgeAngles; ++a) {
+        const float angle = kTwoPi * static_cast<float>(a) / kEdgeAngles;
+        const glm::vec2 n(std::cos(angle), std::sin(angle));
+        for (int o = 0; o < kEdgeOffsets; ++o) {
+            const float d = -kHalfDiagonal + 2.0f * kHalfDiagonal * static_cast<float>(o) /
+                                                 static_cast<float>(kEdgeOffsets - 1);
+            Mask& m = table[size_t(a) * kEdgeOffsets + size_t(o)];
+            for (size_t k = 0; k < points.size(); ++k)
+                if (glm::dot(n, points[k] - glm::vec2(0.5f)) >= d) m[k / 32] |= 1u << (k % 32);
+        }
+    }
+    return table;
+}
+
+glm::ivec2 edgeIndex(glm::vec2 a, glm::vec2 b) {
+    const glm::vec2 e = b - a;
+    const glm::vec2 n = glm::normalize(glm::vec2(-e.y, e.x));  // left of A -> B
+    float angle = std::atan2(n.y, n.x);
+    if (angle < 0.0f) angle += kTwoPi;
+    const int ai = static_cast<int>(std::round(angle / kTwoPi * kEdgeAngles)) % kEdgeAngles;
+    const float d = glm::dot(n, a - glm::vec2(0.5f));
+    const float o = (d + kHalfDiagonal) / (2.0f * kHalfDiagonal) * (kEdgeOffsets - 1);
+    return {ai, static_cast<int>(std::clamp(std::round(o), 0.0f, float(kEdgeOffsets - 1)))};
+}
+
 }  // namespace penumbra::techniques::bitmask

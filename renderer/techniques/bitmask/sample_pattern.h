@@ -41,4 +41,16 @@ int maskIndex(float u);
 // The samples inside [U0, U1) x [V0, V1), from the tables (what the shader computes).
 Mask rectMask(const HalfPlaneTables& t, glm::vec2 lo, glm::vec2 hi);
 
+// The edge tables of microquads (Bitmask Soft Shadows): entry (a, o) holds the samples s with
+// dot(n, s - (0.5, 0.5)) >= d for the normal n at angle 2 pi a / kEdgeAngles and the offset
+// d = -r + 2 r o / (kEdgeOffsets - 1), r = sqrt(2) / 2 (the light's half diagonal); row-major
+// by angle. A back-projected triangle's mask is the AND of its three edges' entries.
+constexpr int kEdgeAngles = 256;
+constexpr int kEdgeOffsets = 256;
+std::vector<Mask> edgeTable(const std::vector<glm::vec2>& points);
+
+// The entry of the half-plane left of the directed edge A -> B (mirrored by edgeMask() in
+// glsl/techniques/bitmask/backproject.glsl): its angle and offset bins.
+glm::ivec2 edgeIndex(glm::vec2 a, glm::vec2 b);
+
 }  // namespace penumbra::techniques::bitmask

@@ -2,8 +2,10 @@
 // promised, and a rectangle's mask from four table lookups equals the samples inside it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <utility>
 
 #include "renderer/core/error.h"
 #include "renderer/techniques/bitmask/sample_pattern.h"
@@ -74,4 +76,49 @@ TEST(BitmaskPattern, TableMasksEqualBruteForceRectangles) {
             for (int w = (bits + 31) / 32; w < kMaskWords; ++w) EXPECT_EQ(m[size_t(w)], 0u);
         }
     }
+}
+
+TEST(BitmaskPattern, EdgeTableTrianglesMatchBruteForceAwayFromEdges) {
+    const auto points = samplePoints(256, Pattern::Jittered, 1);
+    const auto table = edgeTable(points);
+    ASSERT_EQ(table.size(), size_t(kEdgeAngles) * kEdgeOffsets);
+    auto entry = [&](glm::vec2 a, glm::vec2 b) {
+        const glm::ivec2 i = edgeIndex(a, b);
+        return table[size_t(i.x) * kEdgeOffsets + size_t(i.y)];
+    };
+    // Edge bins quantise the line by at most half an angle bin (pi / 256 at up to the light's
+    // half diagonal, 0.0061) plus half an offset bin (0.0028): samples farther than 0.01 from
+    // an edge must be classified exactly.
+    const float tolerance = 0.01f;
+    long checked = 0;
+    for (std::uint32_t trial = 0; trial < 300; ++trial) {
+        glm::vec2 v[3];
+        for (int k = 0; k < 3; ++k)
+            v[k] = {
+                penumbra::techniques::hashToUnit(5, trial, std::uint32_t(2 * k)) * 1.4f - 0.2f,
+                penumbra::techniques::hashToUnit(5, trial, std::uint32_t(2 * k + 1)) * 1.4f - 0.2f};
+        const float area =
+            (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+        if (std::fabs(area) < 0.01f) continue;
+        if (area < 0) std::swap(v[1], v[2]);  // counter-clockwise: inside is left of each edge
+        Mask m{};
+        const Mask e0 = entry(v[0], v[1]), e1 = entry(v[1], v[2]), e2 = entry(v[2], v[0]);
+        for (int w = 0; w < kMaskWords; ++w)
+            m[size_t(w)] = e0[size_t(w)] & e1[size_t(w)] & e2[size_t(w)];
+        for (size_t k = 0; k < points.size(); ++k) {
+            float nearest = 1e9f;
+            bool inside = true;
+            for (int i = 0; i < 3; ++i) {
+                const glm::vec2 a = v[i], b = v[(i + 1) % 3];
+                const glm::vec2 n = glm::normalize(glm::vec2(-(b - a).y, (b - a).x));
+                const float d = glm::dot(n, points[k] - a);
+                inside = inside && d >= 0;
+                nearest = std::min(nearest, std::fabs(d));
+            }
+            if (nearest < tolerance) continue;
+            ++checked;
+            ASSERT_EQ(bool((m[k / 32] >> (k % 32)) & 1u), inside) << "trial " << trial;
+        }
+    }
+    EXPECT_GT(checked, 30000);
 }
