@@ -208,8 +208,9 @@ TEST(BitmaskGL, BudgetFalloffMap) {
 }
 
 TEST(BitmaskGL, BadParametersAreInputErrors) {
-    for (const char* extra : {R"(, "map_size": 200)", R"(, "budget": 1)", R"(, "bits": 100)",
-                              R"(, "map_size": 128, "ysm_size": 256)"})
+    for (const char* extra :
+         {R"(, "map_size": 200)", R"(, "budget": 1)", R"(, "bits": 100)",
+          R"(, "map_size": 128, "ysm_size": 256)", R"(, "accel": "mssm", "map_size": 4096)"})
         EXPECT_THROW(renderScene("closed_form.json", {{"technique", bitmask(extra)}}),
                      penumbra::InputError)
             << extra;

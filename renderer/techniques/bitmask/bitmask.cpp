@@ -14,6 +14,7 @@
 #include "renderer/passes/fullscreen.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/bitmask/loq_targets.h"
+#include "renderer/techniques/bitmask/mask_textures.h"
 #include "renderer/techniques/bitmask/microrects.h"
 #include "renderer/techniques/bitmask/sample_pattern.h"
 #include "renderer/techniques/registry_entries.h"
@@ -68,23 +69,6 @@ Accel accelFromName(const std::string& name) {
     return name == "hsm" ? Accel::Hsm : name == "mssm" ? Accel::Mssm : Accel::Ysm;
 }
 
-// An RGBA32UI texture of WIDTH x 2 MASKS.size() / WIDTH texels: texel (i, 2 r + h) holds words
-// 4 h .. 4 h + 3 of mask r * WIDTH + i.
-gl::Texture maskTexture(const std::vector<bitmask::Mask>& masks, int width, const char* label) {
-    const int rows = static_cast<int>(masks.size()) / width;
-    std::vector<std::uint32_t> texels(masks.size() * bitmask::kMaskWords);
-    for (int r = 0; r < rows; ++r)
-        for (int h = 0; h < 2; ++h)
-            for (int i = 0; i < width; ++i)
-                for (int c = 0; c < 4; ++c)
-                    texels[((size_t(2 * r + h) * size_t(width)) + size_t(i)) * 4 + size_t(c)] =
-                        masks[size_t(r) * size_t(width) + size_t(i)][size_t(4 * h + c)];
-    gl::Texture t = gl::createTexture2D(GL_RGBA32UI, width, 2 * rows, label);
-    glTextureSubImage2D(t.id(), 0, 0, 0, width, 2 * rows, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
-                        texels.data());
-    return t;
-}
-
 class Bitmask final : public Technique {
 public:
     explicit Bitmask(const Params& p)
@@ -114,6 +98,10 @@ public:
         if (!isPowerOfTwo(ysm_size_) || ysm_size_ > map_size_)
             throw InputError("technique.ysm_size: must be a power of two up to map_size, got " +
                              std::to_string(ysm_size_));
+        if (accel_ == Accel::Mssm && map_size_ > 2048)
+            throw InputError(
+                "technique.map_size: at most 2048 with accel \"mssm\" (one RG32F map_size^2 "
+                "layer per level: 384 MB at 2048); use \"ysm\"");
         bitmask::sampleGrid(bits_);  // validates technique.bits
         if (microquads_ && !use_bitmask_)
             throw InputError("technique.occluders: microquad needs visibility \"bitmask\"");
@@ -134,7 +122,11 @@ public:
         glTextureSubImage2D(receives_.id(), 0, 0, 0, static_cast<int>(receives.size()), 1, GL_RED,
                             GL_UNSIGNED_BYTE, receives.data());
         ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
-        if (use_bitmask_) uploadMasks();
+        if (use_bitmask_) {
+            const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
+            masks_ = bitmask::halfPlaneTexture(points);
+            if (microquads_) edges_ = bitmask::edgeTexture(points);
+        }
         if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
         const gl::Defines defines = {{"ACCEL", std::to_string(static_cast<int>(accel_))},
                                      {"BITMASK", use_bitmask_ ? "1" : "0"},
@@ -185,18 +177,6 @@ public:
     }
 
 private:
-    // The half-plane tables (texture rows 0-1: x >= u, rows 2-3: y >= v) and, for
-    // microquads, the edge tables (rows 2a, 2a + 1: angle a).
-    void uploadMasks() {
-        const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
-        auto tables = bitmask::halfPlaneTables(points);
-        tables.x.insert(tables.x.end(), tables.y.begin(), tables.y.end());
-        masks_ = maskTexture(tables.x, bitmask::kTableResolution + 1, "bitmask half-plane masks");
-        if (microquads_)
-            edges_ =
-                maskTexture(bitmask::edgeTable(points), bitmask::kEdgeOffsets, "bitmask edges");
-    }
-
     // The uniforms and textures of search.glsl.
     void bindSearch(const render::FrameContext& ctx, const gl::Program& p,
                     const scene::RectLight& light, const ssm::LightWindow& window) {
