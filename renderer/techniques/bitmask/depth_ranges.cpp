@@ -5,6 +5,7 @@
 
 #include "renderer/core/error.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/shadow_maps.h"
 
 namespace penumbra::techniques::bitmask {
 namespace {
@@ -47,13 +48,7 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
 
 void DepthRanges::renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                             const glm::mat4& view_proj) {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, map_size_, map_size_);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    passes::beginDepthMapDraw(fbo_.id(), map_size_);
     const float empty[4] = {kEmpty, kEmpty, 0.0f, 0.0f}, far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
