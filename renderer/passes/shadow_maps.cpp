@@ -12,6 +12,16 @@ namespace {
 constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
 }
 
+void beginDepthMapDraw(GLuint fbo, int size) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, size, size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+}
+
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
                           const Bounds& casters, float weight, int map_size) {
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
@@ -108,13 +118,7 @@ ShadowMapBatch::ShadowMapBatch(int map_size, int layers, bool vertex_layer)
 
 void ShadowMapBatch::render(const GpuScene& scene, int view_base, int count) {
     count = std::min(count, layers_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, map_size_, map_size_);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    beginDepthMapDraw(fbo_.id(), map_size_);
     glUseProgram(program_.id());
     const float one = 1.0f;
     if (vertex_layer_) {

@@ -29,6 +29,10 @@ struct SampleView {
 };
 static_assert(sizeof(SampleView) == 160);
 
+// Binds FBO with a SIZE x SIZE viewport for a depth-tested (LESS, writing), unblended,
+// unculled draw: the state of every light depth map.
+void beginDepthMapDraw(GLuint fbo, int size);
+
 // The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
                           const Bounds& casters, float weight, int map_size);

@@ -8,5 +8,6 @@ extern const TechniqueInfo kHardTechnique;
 extern const TechniqueInfo kReferenceTechnique;
 extern const TechniqueInfo kSsmTechnique;
 extern const TechniqueInfo kAdaptiveTechnique;
+extern const TechniqueInfo kBitmaskTechnique;
 extern const TechniqueInfo kCssTechnique;
 }  // namespace penumbra::techniques

@@ -14,6 +14,7 @@
 #include "renderer/techniques/technique.h"
 
 using penumbra::testing::channel;
+using penumbra::testing::shadowRegionMae;
 
 namespace {
 
@@ -54,27 +55,13 @@ std::string reference(int n) {
     return R"({"name": "reference", "map_size": 512, "samples": )" + std::to_string(n) + "}";
 }
 
-// Mean |a - truth| over pixels where either is in shadow (below 0.999).
-double shadowMae(const std::vector<float>& a, const std::vector<float>& truth,
-                 long min_pixels = 500) {
-    double sum = 0;
-    long n = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (a[i] >= 0.999f && truth[i] >= 0.999f) continue;
-        sum += std::fabs(double(a[i]) - double(truth[i]));
-        ++n;
-    }
-    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the image";
-    return n ? sum / double(n) : 1.0;
-}
-
 // The issue's bar on SCENE: default adaptive at most as far from reference N = 32 as
 // reference N = 8 is, with at most a third of the 256 maps reference N = 16 renders.
 void checkAgainstReference(const std::string& scene) {
     const auto truth = render(scene, reference(32)).visibility;
-    const double ref8 = shadowMae(render(scene, reference(8)).visibility, truth);
+    const double ref8 = shadowRegionMae(render(scene, reference(8)).visibility, truth);
     const auto a = render(scene, adaptive());
-    const double mae = shadowMae(a.visibility, truth);
+    const double mae = shadowRegionMae(a.visibility, truth);
     const int maps = a.stats.value("maps_rendered", 0);
     std::printf(
         "%s: adaptive MAE %.5f with %d maps (depth %d, %d comparisons); reference N=8 "
@@ -148,7 +135,7 @@ TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
         auto r =
             render("closed_form.json",
                    adaptive(std::string(R"(, "epsilon": 0.01, "weights": ")") + names[i] + "\""));
-        mae[i] = shadowMae(r.visibility, truth);
+        mae[i] = shadowRegionMae(r.visibility, truth);
         std::printf("weights %s: MAE %.5f with %d maps\n", names[i], mae[i],
                     r.stats.value("maps_rendered", 0));
     }
@@ -188,7 +175,7 @@ TEST(AdaptiveGL, ErrorFallsAsEpsilonFalls) {
     int last_maps = 0;
     for (const char* eps : {"0.05", "0.01", "0.003", "0.0"}) {
         auto r = render("closed_form.json", adaptive(std::string(R"(, "epsilon": )") + eps));
-        const double mae = shadowMae(r.visibility, truth);
+        const double mae = shadowRegionMae(r.visibility, truth);
         const int maps = r.stats.value("maps_rendered", 0);
         std::printf("epsilon %s: MAE %.5f with %d maps\n", eps, mae, maps);
         EXPECT_LE(mae, last);  // the same jittered lattice, refined further: never worse here
@@ -237,8 +224,8 @@ TEST(AdaptiveGL, TileMetricRefinesASmallShadowTheGlobalOneMisses) {
     const auto truth = render(scene, reference(32)).visibility;
     auto global = render(scene, adaptive());
     auto tile = render(scene, adaptive(R"(, "metric": "tile")"));
-    const double mae_global = shadowMae(global.visibility, truth, 100);
-    const double mae_tile = shadowMae(tile.visibility, truth, 100);
+    const double mae_global = shadowRegionMae(global.visibility, truth, 100);
+    const double mae_tile = shadowRegionMae(tile.visibility, truth, 100);
     std::printf(
         "small shadow: global metric MAE %.5f with %d maps, tile metric MAE %.5f with %d "
         "maps\n",
@@ -259,8 +246,8 @@ TEST(AdaptiveGL, LightCentreReprojectionIsViewIndependent) {
     EXPECT_EQ(a.stats.value("comparisons", 0), b.stats.value("comparisons", 0));
     EXPECT_GT(a.stats.value("maps_rendered", 0), 4);
     const auto truth = render("closed_form.json", reference(32)).visibility;
-    const double mae = shadowMae(a.visibility, truth);
-    const double ref4 = shadowMae(render("closed_form.json", reference(4)).visibility, truth);
+    const double mae = shadowRegionMae(a.visibility, truth);
+    const double ref4 = shadowRegionMae(render("closed_form.json", reference(4)).visibility, truth);
     std::printf("light-centre reprojection: MAE %.5f with %d maps; reference N=4 MAE %.5f\n", mae,
                 a.stats.value("maps_rendered", 0), ref4);
     // No accuracy bar of the paper's for this mode: it refines where the light, not the camera,
@@ -277,8 +264,8 @@ TEST(AdaptiveGL, ShadowTestComparisonRefinesWhereShadowsDiffer) {
         const auto truth = render(scene, reference(32)).visibility;
         auto depth = render(scene, adaptive(R"(, "epsilon": 0.01)"));
         auto tests = render(scene, adaptive(R"(, "epsilon": 0.01, "compare": "shadow_test")"));
-        const double mae_depth = shadowMae(depth.visibility, truth);
-        const double mae_tests = shadowMae(tests.visibility, truth);
+        const double mae_depth = shadowRegionMae(depth.visibility, truth);
+        const double mae_tests = shadowRegionMae(tests.visibility, truth);
         std::printf(
             "%s: depth comparison MAE %.5f with %d maps, %d comparisons; shadow-test "
             "comparison MAE %.5f with %d maps, %d comparisons\n",

@@ -34,7 +34,7 @@ const gl::ContextInfo& glInfo() {
 }
 
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
-                          int frame) {
+                          int frame, nlohmann::json* stats) {
     const gl::ContextInfo& info = glInfo();
     auto source = scene::SceneSource::load(
         std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
@@ -44,8 +44,9 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
     Params params = resolveParams(technique->params, s.technique, name + ": technique");
     render::FrameRenderer renderer(info, s, *technique, params);
     render::PassTimer timer(info.software);
-    renderer.render(s, timer);
+    nlohmann::json technique_stats = renderer.render(s, timer);
     timer.finishFrame();
+    if (stats) *stats = technique_stats;
     output::Image image = renderer.readImage();
     gl::checkErrors(name);  // no GL error after any render
     return image;
@@ -84,6 +85,19 @@ double floorShadowMae(const output::Image& ref, const output::Image& test, long 
     }
     EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the floor";
     return n ? sum / static_cast<double>(n) : 1.0;
+}
+
+double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& truth,
+                       long min_pixels) {
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (a[i] >= 0.999f && truth[i] >= 0.999f) continue;
+        sum += std::fabs(double(a[i]) - double(truth[i]));
+        ++n;
+    }
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the image";
+    return n ? sum / double(n) : 1.0;
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "renderer/gl/context.h"
 #include "renderer/output/image.h"
 #include "renderer/scene/scene_source.h"
@@ -17,9 +19,10 @@ namespace penumbra::testing {
 const gl::ContextInfo& glInfo();
 
 // Renders frame FRAME of tests/data/gl/NAME (relative to the source tree) with OVERRIDES
-// (-D style) and checks that no GL error was raised.
+// (-D style) and checks that no GL error was raised; the technique statistics go to STATS
+// when given.
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
-                          int frame = 0);
+                          int frame = 0, nlohmann::json* stats = nullptr);
 
 // Shadow-region MAE (Atty et al. 5.2.1) of IMG's visibility against the closed form of
 // closed_form.json (a 0.8 m square occluder at (0.2, 1.5, 0.1) parallel to a square light of half
@@ -31,6 +34,11 @@ double closedFormShadowMae(const output::Image& img, double light_half, long min
 // (id 0), the receiver of the test scenes, where either is below 0.999. Expects more than
 // MIN_PIXELS such pixels.
 double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels = 500);
+
+// Shadow-region MAE: mean |a[i] - truth[i]| over pixels where either is below 0.999 (in
+// shadow). Expects more than MIN_PIXELS such pixels.
+double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& truth,
+                       long min_pixels = 500);
 
 // The largest |a[i] - b[i]| of two equally long channels.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);

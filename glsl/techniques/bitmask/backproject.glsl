@@ -1,0 +1,99 @@
+// `bitmask` back-projection (Schwarz & Stamminger, Bitmask Soft Shadows): every micropatch of
+// an HSM level inside a search area that lies in front of the receiver is projected from the
+// receiver onto the light; its light rectangle sets the bits of the light samples inside it
+// (BITMASK 1, four half-plane table lookups) or adds its area (BITMASK 0). GAP_FILL 1 extends
+// a micropatch towards a farther neighbour micropatch so their projections leave no gap.
+// MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
+// the extent and depth come from their own mip chains (section 5.2). Needs search.glsl.
+#if MICRORECTS
+layout(binding = 9) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
+layout(binding = 10) uniform sampler2D u_rect_depth;
+#endif
+#if BITMASK
+layout(binding = 6) uniform usampler2D u_masks;  // rows 0-1: x >= u words, rows 2-3: y >= v
+uniform int u_mask_resolution;
+uniform float u_sample_count;
+#endif
+
+// The light-plane coordinate of the ray from receiver coordinate P (depth PZ) through window
+// coordinate W at distance Z: z (w pz - p) / (pz - z).
+float onLight(float w, float p, float pz, float z) { return z * (w * pz - p) / (pz - z); }
+
+#if BITMASK
+// Visibility from an occlusion bitmask of u_sample_count bits in two halves.
+float maskVisibility(uvec4 m0, uvec4 m1) {
+    uvec4 bits = uvec4(bitCount(m0) + bitCount(m1));
+    return 1.0 - float(bits.x + bits.y + bits.z + bits.w) / u_sample_count;
+}
+#endif
+
+#if MICROQUADS
+#include "techniques/bitmask/microquads.glsl"
+#endif
+
+#if BITMASK
+int maskIndex(float u) {
+    return clamp(int(ceil(u * float(u_mask_resolution) - 0.5)), 0, u_mask_resolution);
+}
+#endif
+
+// Back-projects the micropatches of LEVEL in AREA (level-0 texels) for receiver P; returns
+// visibility, COUNT = micro-occluders back-projected.
+float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
+#if MICROQUADS
+    return backprojectQuads(p, pz, area, level, count);
+#endif
+    count = 0;
+    int n = u_map_size >> level;
+    ivec4 r = levelRange(area, level, 1);
+    vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
+#if BITMASK
+    uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
+#else
+    float occluded = 0.0;
+#endif
+    for (int y = r.y; y <= r.w; ++y)
+        for (int x = r.x; x <= r.z; ++x) {
+#if MICRORECTS
+            float zo = texelFetch(u_rect_depth, ivec2(x, y), level).r;
+            if (zo >= pz) continue;
+            ++count;
+            vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
+            vec2 w0 = u_win_lo + e.xy * u_texel, w1 = u_win_lo + (e.zw + 1.0) * u_texel;
+#else
+            float zo = texelFetch(u_hsm, ivec2(x, y), level).r;
+            if (zo >= pz) continue;
+            ++count;
+            vec2 w0 = u_win_lo + vec2(x, y) * t, w1 = w0 + t;
+#endif
+            vec2 l0 = vec2(onLight(w0.x, p.x, p.z, zo), onLight(w0.y, p.y, p.z, zo));
+            vec2 l1 = vec2(onLight(w1.x, p.x, p.z, zo), onLight(w1.y, p.y, p.z, zo));
+#if GAP_FILL && !MICRORECTS
+            float zl = x > 0 ? texelFetch(u_hsm, ivec2(x - 1, y), level).r : pz;
+            float zr = x < n - 1 ? texelFetch(u_hsm, ivec2(x + 1, y), level).r : pz;
+            float zd = y > 0 ? texelFetch(u_hsm, ivec2(x, y - 1), level).r : pz;
+            float zu = y < n - 1 ? texelFetch(u_hsm, ivec2(x, y + 1), level).r : pz;
+            if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w0.x, p.x, p.z, zl));
+            if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w1.x, p.x, p.z, zr));
+            if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w0.y, p.y, p.z, zd));
+            if (zu > zo && zu < pz) l1.y = max(l1.y, onLight(w1.y, p.y, p.z, zu));
+#endif
+            vec2 uv0 = clamp(l0 * scale + 0.5, 0.0, 1.0), uv1 = clamp(l1 * scale + 0.5, 0.0, 1.0);
+            if (uv0.x >= uv1.x || uv0.y >= uv1.y) continue;
+#if BITMASK
+            int x0 = maskIndex(uv0.x), x1 = maskIndex(uv1.x);
+            int y0 = maskIndex(uv0.y), y1 = maskIndex(uv1.y);
+            m0 |= texelFetch(u_masks, ivec2(x0, 0), 0) & ~texelFetch(u_masks, ivec2(x1, 0), 0) &
+                  texelFetch(u_masks, ivec2(y0, 2), 0) & ~texelFetch(u_masks, ivec2(y1, 2), 0);
+            m1 |= texelFetch(u_masks, ivec2(x0, 1), 0) & ~texelFetch(u_masks, ivec2(x1, 1), 0) &
+                  texelFetch(u_masks, ivec2(y0, 3), 0) & ~texelFetch(u_masks, ivec2(y1, 3), 0);
+#else
+            occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
+#endif
+        }
+#if BITMASK
+    return maskVisibility(m0, m1);
+#else
+    return 1.0 - min(occluded, 1.0);
+#endif
+}

@@ -1,0 +1,133 @@
+// `bitmask` search areas (Schwarz & Stamminger, 3): the receiver in the light's frame, the
+// shadow-map area that the light pyramid through it cuts at a depth, the depth range of an
+// area from the HSM, MSSM or YSM, and the budget's level. Coordinates: window (x/z, y/z at the
+// light's centre), texels of level 0 (window - lo) / texel. Needs ACCEL 0 HSM, 1 MSSM, 2 YSM.
+#define CLASS_LIT 0
+#define CLASS_PENUMBRA 1
+#define CLASS_UMBRA 2
+
+layout(binding = 0) uniform sampler2D u_position;
+layout(binding = 1) uniform sampler2D u_normal;
+layout(binding = 2) uniform isampler2D u_id;
+layout(binding = 3) uniform sampler2D u_receives;  // 1 per object id that receives shadows
+layout(binding = 4) uniform sampler2D u_hsm;       // (min, max) distance, mip pyramid
+#if ACCEL != 0
+layout(binding = 5) uniform sampler2DArray u_mssm;  // layer k: 2^k x 2^k neighbourhoods
+uniform int u_mssm_base;                            // the HSM level that is MSSM layer 0
+#endif
+
+uniform vec3 u_light_centre;
+uniform vec3 u_light_right;
+uniform vec3 u_light_up;
+uniform vec3 u_light_forward;
+uniform vec2 u_light_half;     // half the light's size
+uniform vec2 u_win_lo;         // the map's window at distance 1
+uniform vec2 u_texel;          // window units per level-0 texel
+uniform int u_map_size;
+uniform int u_levels;
+uniform float u_near;          // the nearest caster's distance
+uniform float u_normal_offset; // receiver offset along its normal, in texels at its distance
+uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - bias) * p.z
+
+// The receiver at pixel PIX in the light's frame (x right, y up, z forward), offset along its
+// normal; false where the pixel has no receiving geometry or lies behind the light.
+bool receiverAt(ivec2 pix, out vec3 p) {
+    p = vec3(0.0);
+    vec4 pos = texelFetch(u_position, pix, 0);
+    if (pos.w == 0.0) return false;
+    int id = texelFetch(u_id, pix, 0).r;
+    if (id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) return false;
+    vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+    vec3 d = pos.xyz - u_light_centre;
+    float z = dot(d, u_light_forward);
+    if (z <= 0.0) return false;
+    d += n * (u_normal_offset * max(u_texel.x, u_texel.y) * z);
+    p = vec3(dot(d, u_light_right), dot(d, u_light_up), dot(d, u_light_forward));
+    return p.z > 0.0;
+}
+
+// The distance below which a micro-occluder shadows P.
+float biasedDepth(vec3 p) { return p.z * (1.0 - u_depth_bias); }
+
+// The search area of P at depth Z: the light pyramid through P cut at Z, in level-0 texels
+// (x0, y0, x1, y1), unclipped.
+vec4 searchArea(vec3 p, float z) {
+    vec2 c = p.xy / p.z;
+    vec2 h = u_light_half * (1.0 / z - 1.0 / p.z);
+    return vec4((c - h - u_win_lo) / u_texel, (c + h - u_win_lo) / u_texel);
+}
+
+bool areaMissesMap(vec4 a) {
+    return a.z < 0.0 || a.w < 0.0 || a.x >= float(u_map_size) || a.y >= float(u_map_size);
+}
+
+bool areaInsideMap(vec4 a) {
+    return a.x >= 0.0 && a.y >= 0.0 && a.z < float(u_map_size) && a.w < float(u_map_size);
+}
+
+// The fractional level at which an area of EXTENT level-0 texels spans at most BUDGET texels
+// per axis (extent / 2^l <= budget - 1); 0 for an unlimited budget (BUDGET <= 0).
+float budgetLevel(float extent, int budget) {
+    if (budget <= 0) return 0.0;
+    return clamp(log2(max(extent, 1e-6) / float(budget - 1)), 0.0, float(u_levels - 1));
+}
+
+float areaExtent(vec4 a) {
+    vec4 c = clamp(a, vec4(0.0), vec4(float(u_map_size)));
+    return max(c.z - c.x, c.w - c.y);
+}
+
+vec2 combine4(vec2 a, vec2 b, vec2 c, vec2 d) {
+    return vec2(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)));
+}
+
+// The HSM level at which the inclusive texel range R (level 0) spans at most 2 x 2 texels.
+int hsmQueryLevel(ivec4 r) {
+    int k = 0;
+    while (k < u_levels - 1 && ((r.z >> k) - (r.x >> k) > 1 || (r.w >> k) - (r.y >> k) > 1)) ++k;
+    return k;
+}
+
+vec2 hsmRange(ivec4 r, int k) {
+    ivec4 q = r >> k;
+    return combine4(texelFetch(u_hsm, q.xy, k).rg, texelFetch(u_hsm, q.zy, k).rg,
+                    texelFetch(u_hsm, q.xw, k).rg, texelFetch(u_hsm, q.zw, k).rg);
+}
+
+#if ACCEL != 0
+// The range over the inclusive texel range R of MSSM layer 0: four (overlapping) power-of-two
+// neighbourhoods that cover it exactly along its longer axis.
+vec2 mssmRange(ivec4 r) {
+    int extent = max(r.z - r.x, r.w - r.y) + 1;
+    int k = findMSB(extent);
+    ivec2 hi = max(r.zw - ((1 << k) - 1), r.xy);
+    return combine4(texelFetch(u_mssm, ivec3(r.xy, k), 0).rg,
+                    texelFetch(u_mssm, ivec3(hi.x, r.y, k), 0).rg,
+                    texelFetch(u_mssm, ivec3(r.x, hi.y, k), 0).rg,
+                    texelFetch(u_mssm, ivec3(hi, k), 0).rg);
+}
+#endif
+
+// The (min, max) distance over area A (level-0 texels), grown outward to whole texels of level
+// ALIGN first, so that a pixel is called lit only where every level-ALIGN micro-occluder it
+// would back-project is behind it (section 6, "over-precision").
+vec2 depthRange(vec4 a, int align) {
+    ivec4 r = clamp(ivec4(floor(a)), ivec4(0), ivec4(u_map_size - 1));
+    r.xy = (r.xy >> align) << align;
+    r.zw = min(((r.zw >> align) << align) + ((1 << align) - 1), ivec2(u_map_size - 1));
+#if ACCEL == 0
+    return hsmRange(r, hsmQueryLevel(r));
+#elif ACCEL == 1
+    return mssmRange(r);
+#else
+    int k = hsmQueryLevel(r);
+    if (k <= u_mssm_base) return hsmRange(r, k);
+    return mssmRange(r >> u_mssm_base);
+#endif
+}
+
+// The texels of LEVEL that hold area A (level-0 texels), clamped to [0, size - LAST].
+ivec4 levelRange(vec4 a, int level, int last) {
+    int n = u_map_size >> level;
+    return clamp(ivec4(floor(a / float(1 << level))), ivec4(0), ivec4(max(n - last, 0)));
+}

@@ -1,0 +1,331 @@
+// `bitmask`: receiver-driven soft shadow mapping with occlusion bitmasks and smooth quality
+// scaling (Schwarz & Stamminger 2007, 2008). Per pixel a search area in a light depth map,
+// refined with its depth range (HSM, MSSM or YSM); micropatches of a budget-chosen level
+// back-projected onto the light into a bitmask of light samples (or summed as area).
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/core/error.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/techniques/bitmask/depth_ranges.h"
+#include "renderer/techniques/bitmask/loq_targets.h"
+#include "renderer/techniques/bitmask/mask_textures.h"
+#include "renderer/techniques/bitmask/microrects.h"
+#include "renderer/techniques/bitmask/sample_pattern.h"
+#include "renderer/techniques/registry_entries.h"
+#include "renderer/techniques/ssm/light_windows.h"
+
+namespace penumbra::techniques {
+namespace {
+
+using bitmask::Accel;
+using bitmask::DepthRanges;
+
+constexpr std::array kBitmaskParams = {
+    intParam("map_size", 1024, 16, 4096, "light depth map width and height (a power of two)"),
+    enumParam("accel", "ysm", "hsm|mssm|ysm",
+              "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
+    intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
+    enumParam("occluders", "micropatch", "micropatch|microquad|microrect",
+              "micro-occluders: texels, quads between texel centres (bitmask only), or "
+              "microrects merged per level (5.2)"),
+    enumParam("visibility", "bitmask", "bitmask|area",
+              "occlusion bitmask of light samples, or summed back-projected area"),
+    intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
+    enumParam("pattern", "jittered", "regular|jittered|random", "light sample pattern"),
+    intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
+    boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)"),
+    intParam("budget", 12, 0, 256,
+             "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
+             "unlimited, else >= 2); blending also back-projects the finer floor level"),
+    boolParam("budget_falloff", false,
+              "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners"),
+    intParam("budget_edge", 5, 2, 256, "b_mo at the image corners when budget_falloff is on"),
+    boolParam("smooth", true,
+              "bilateral-filter the fractional level and blend floor/ceiling levels (4.2)"),
+    intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels"),
+    floatParam("depth_tolerance", 0.03, 0.0, 1.0,
+               "relative view-depth step where the filter stops (a depth discontinuity)"),
+    intParam("refine_steps", 4, 0, 16, "search-area refinements with the area's depth range"),
+    boolParam("grow_query", true,
+              "grow depth-range queries to the budget level's texels (section 6, Fig. 7)"),
+    floatParam("normal_offset", 1.5, 0.0, 16.0,
+               "receiver offset along its normal, in light-map texels (against acne)"),
+    floatParam(
+        "depth_bias", 0.003, 0.0, 0.5,
+        "a micro-occluder shadows a receiver only when nearer by this fraction of its depth"),
+};
+
+bool isPowerOfTwo(int n) {
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
+Accel accelFromName(const std::string& name) {
+    return name == "hsm" ? Accel::Hsm : name == "mssm" ? Accel::Mssm : Accel::Ysm;
+}
+
+class Bitmask final : public Technique {
+public:
+    explicit Bitmask(const Params& p)
+        : map_size_(p.getInt("map_size")),
+          accel_(accelFromName(p.getString("accel"))),
+          ysm_size_(p.getInt("ysm_size")),
+          microrects_(p.getString("occluders") == "microrect"),
+          microquads_(p.getString("occluders") == "microquad"),
+          use_bitmask_(p.getString("visibility") == "bitmask"),
+          bits_(p.getInt("bits")),
+          pattern_(bitmask::patternFromName(p.getString("pattern"))),
+          seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
+          gap_fill_(p.getBool("gap_fill")),
+          budget_(p.getInt("budget")),
+          falloff_(p.getBool("budget_falloff")),
+          budget_edge_(p.getInt("budget_edge")),
+          smooth_(p.getBool("smooth")),
+          radius_(p.getInt("smooth_radius")),
+          depth_tolerance_(static_cast<float>(p.getFloat("depth_tolerance"))),
+          refine_steps_(p.getInt("refine_steps")),
+          grow_query_(p.getBool("grow_query")),
+          normal_offset_(static_cast<float>(p.getFloat("normal_offset"))),
+          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))) {
+        if (!isPowerOfTwo(map_size_))
+            throw InputError("technique.map_size: must be a power of two, got " +
+                             std::to_string(map_size_));
+        if (!isPowerOfTwo(ysm_size_) || ysm_size_ > map_size_)
+            throw InputError("technique.ysm_size: must be a power of two up to map_size, got " +
+                             std::to_string(ysm_size_));
+        if (accel_ == Accel::Mssm && map_size_ > 2048)
+            throw InputError(
+                "technique.map_size: at most 2048 with accel \"mssm\" (one RG32F map_size^2 "
+                "layer per level: 384 MB at 2048); use \"ysm\"");
+        bitmask::sampleGrid(bits_);  // validates technique.bits
+        if (microquads_ && !use_bitmask_)
+            throw InputError("technique.occluders: microquad needs visibility \"bitmask\"");
+        if (budget_ == 1) throw InputError("technique.budget: must be 0 (unlimited) or >= 2");
+        // An unlimited budget uses level 0 everywhere: nothing to smooth or blend (Table 2).
+        if (budget_ == 0) smooth_ = false;
+    }
+
+    void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override {
+        std::vector<std::uint8_t> receives;
+        for (const auto& o : scene.objects()) {
+            receives.resize(std::max(receives.size(), static_cast<size_t>(o.id) + 1), 0);
+            receives[static_cast<size_t>(o.id)] = scene::receivesShadow(o.shadow) ? 255 : 0;
+        }
+        if (receives.empty()) receives.push_back(0);
+        receives_ = gl::createTexture2D(GL_R8, static_cast<int>(receives.size()), 1,
+                                        "bitmask receiving objects");
+        glTextureSubImage2D(receives_.id(), 0, 0, 0, static_cast<int>(receives.size()), 1, GL_RED,
+                            GL_UNSIGNED_BYTE, receives.data());
+        ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
+        if (use_bitmask_) {
+            const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
+            masks_ = bitmask::halfPlaneTexture(points);
+            if (microquads_) edges_ = bitmask::edgeTexture(points);
+        }
+        if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
+        const gl::Defines defines = {{"ACCEL", std::to_string(static_cast<int>(accel_))},
+                                     {"BITMASK", use_bitmask_ ? "1" : "0"},
+                                     {"GAP_FILL", gap_fill_ ? "1" : "0"},
+                                     {"MICRORECTS", microrects_ ? "1" : "0"},
+                                     {"MICROQUADS", microquads_ ? "1" : "0"},
+                                     {"BLEND", smooth_ ? "1" : "0"}};
+        classify_ = gl::buildProgram("bitmask classify",
+                                     {"passes/fullscreen.vert", "techniques/bitmask/classify.frag"},
+                                     defines);
+        smooth_program_ = gl::buildProgram(
+            "bitmask loq smooth", {"passes/fullscreen.vert", "techniques/bitmask/loq_smooth.frag"});
+        visibility_ = gl::buildProgram(
+            "bitmask visibility", {"passes/fullscreen.vert", "techniques/bitmask/visibility.frag"},
+            defines);
+        stats_ = gl::createBuffer("bitmask statistics");
+        glNamedBufferStorage(stats_.id(), 6 * sizeof(std::uint32_t), nullptr,
+                             GL_DYNAMIC_STORAGE_BIT);
+    }
+
+    void render(render::FrameContext& ctx) override {
+        const scene::RectLight& light = ctx.currentLight();
+        const ssm::LightWindow window = ssm::occluderWindow(light, ctx.gpu.casterBounds());
+        const int width = ctx.gbuffer.width(), height = ctx.gbuffer.height();
+        if (!targets_ || targets_->width() != width || targets_->height() != height)
+            targets_ = std::make_unique<bitmask::LoqTargets>(width, height);
+        const bool shadowed = !window.empty();
+        if (shadowed) {
+            ctx.pass("bitmask_shadow_map",
+                     [&] { ranges_->renderMap(ctx.gpu, light, window.viewProj(light)); });
+            ctx.pass("bitmask_hsm", [&] { ranges_->buildHsm(); });
+            if (accel_ != Accel::Hsm)
+                ctx.pass(accel_ == Accel::Ysm ? "bitmask_ysm" : "bitmask_mssm",
+                         [&] { ranges_->buildMssm(); });
+            if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
+        }
+        ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
+        if (smooth_) ctx.pass("bitmask_smooth", [&] { smoothLoq(ctx); });
+        const std::uint32_t zero[6] = {0, 0, 0, 0, 0, 0};
+        glNamedBufferSubData(stats_.id(), 0, sizeof(zero), zero);
+        ctx.pass("bitmask_visibility", [&] { visibility(ctx, light, window); });
+        addStatistics(ctx, width, height);
+    }
+
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        using C = DiagnosticChannel::Combine;
+        return {{"level", C::Max}, {"budget", C::Max}, {"occluders", C::Sum}, {"class", C::Max}};
+    }
+
+private:
+    // The uniforms and textures of search.glsl.
+    void bindSearch(const render::FrameContext& ctx, const gl::Program& p,
+                    const scene::RectLight& light, const ssm::LightWindow& window) {
+        glBindTextureUnit(0, ctx.gbuffer.position().id());
+        glBindTextureUnit(1, ctx.gbuffer.normal().id());
+        glBindTextureUnit(2, ctx.gbuffer.id().id());
+        glBindTextureUnit(3, receives_.id());
+        glBindTextureUnit(4, ranges_->hsm().id());
+        if (accel_ != Accel::Hsm) glBindTextureUnit(5, ranges_->mssm().id());
+        gl::setUniform(p, "u_mssm_base", ranges_->mssmBase());
+        gl::setUniform(p, "u_light_centre", light.position);
+        gl::setUniform(p, "u_light_right", light.right());
+        gl::setUniform(p, "u_light_up", light.upAxis());
+        gl::setUniform(p, "u_light_forward", light.forward());
+        gl::setUniform(p, "u_light_half", 0.5f * light.size);
+        gl::setUniform(p, "u_win_lo", window.lo);
+        gl::setUniform(p, "u_texel", window.size / static_cast<float>(map_size_));
+        gl::setUniform(p, "u_map_size", map_size_);
+        gl::setUniform(p, "u_levels", ranges_->levels());
+        gl::setUniform(p, "u_near", window.near);
+        gl::setUniform(p, "u_normal_offset", normal_offset_);
+        gl::setUniform(p, "u_depth_bias", depth_bias_);
+    }
+
+    void classify(render::FrameContext& ctx, const scene::RectLight& light,
+                  const ssm::LightWindow& window, bool shadowed) {
+        targets_->bindClassify();
+        const float zero[4] = {0, 0, 0, 0}, none[4] = {-1, 0, float(budget_), 0};
+        glClearBufferfv(GL_COLOR, 0, zero);
+        glClearBufferfv(GL_COLOR, 1, none);
+        if (shadowed) {
+            const auto& p = classify_;
+            glUseProgram(p.id());
+            bindSearch(ctx, p, light, window);
+            gl::setUniform(p, "u_refine_steps", refine_steps_);
+            gl::setUniform(p, "u_budget", budget_);
+            gl::setUniform(p, "u_budget_edge", budget_edge_);
+            gl::setUniform(p, "u_budget_falloff", falloff_ ? 1 : 0);
+            gl::setUniform(p, "u_grow_query", grow_query_ ? 1 : 0);
+            fullscreen_.draw();
+            glUseProgram(0);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
+    // The separable bilateral filter: horizontal into the spare LOQ map, vertical back.
+    void smoothLoq(render::FrameContext& ctx) {
+        const auto& p = smooth_program_;
+        glUseProgram(p.id());
+        gl::setUniform(p, "u_radius", radius_);
+        gl::setUniform(p, "u_depth_tolerance", depth_tolerance_);
+        glBindTextureUnit(1, ctx.gbuffer.normal().id());
+        for (int pass = 0; pass < 2; ++pass) {
+            targets_->bindLoq(pass == 0 ? 1 : 0);
+            glBindTextureUnit(0, targets_->loq(pass == 0 ? 0 : 1).id());
+            gl::setUniform(p, "u_direction", pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
+            fullscreen_.draw();
+        }
+        glUseProgram(0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
+    void visibility(render::FrameContext& ctx, const scene::RectLight& light,
+                    const ssm::LightWindow& window) {
+        ctx.bindOutput();
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        const auto& p = visibility_;
+        glUseProgram(p.id());
+        bindSearch(ctx, p, light, window);
+        if (use_bitmask_) {
+            glBindTextureUnit(6, masks_.id());
+            gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
+            gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
+        }
+        glBindTextureUnit(7, targets_->area().id());
+        glBindTextureUnit(8, targets_->loq(0).id());
+        if (microquads_) {
+            glBindTextureUnit(11, edges_.id());
+            gl::setUniform(p, "u_edge_angles", bitmask::kEdgeAngles);
+            gl::setUniform(p, "u_edge_offsets", bitmask::kEdgeOffsets);
+        }
+        if (microrects_) {
+            glBindTextureUnit(9, rects_->extent().id());
+            glBindTextureUnit(10, rects_->depth().id());
+        }
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, stats_.id());
+        fullscreen_.draw();
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        glUseProgram(0);
+    }
+
+    // Table 2 of the paper: share of pixels that back-project, mean and standard deviation of
+    // the micro-occluders each of them back-projects (sums kept over lights).
+    void addStatistics(render::FrameContext& ctx, int width, int height) {
+        std::uint32_t s[6] = {0, 0, 0, 0, 0, 0};
+        glGetNamedBufferSubData(stats_.id(), 0, sizeof(s), s);
+        auto add = [&](const char* key, double v) {
+            const double total = ctx.stats.value(key, 0.0) + v;
+            ctx.stats[key] = total;
+            return total;
+        };
+        const double pixels = add("pixels", double(width) * double(height));
+        const double n = add("backprojecting_pixels", s[0]);
+        add("umbra_pixels", s[1]);
+        const double sum = add("micro_occluders", double(s[2]) + 4294967296.0 * double(s[3]));
+        const double squares =
+            add("micro_occluders_squared", double(s[4]) + 4294967296.0 * double(s[5]));
+        const double mean = n > 0 ? sum / n : 0.0;
+        ctx.stats["backprojecting_share"] = pixels > 0 ? n / pixels : 0.0;
+        ctx.stats["micro_occluders_mean"] = mean;
+        ctx.stats["micro_occluders_stddev"] =
+            n > 0 ? std::sqrt(std::max(squares / n - mean * mean, 0.0)) : 0.0;
+    }
+
+    int map_size_;
+    Accel accel_;
+    int ysm_size_;
+    bool microrects_, microquads_;
+    bool use_bitmask_;
+    int bits_;
+    bitmask::Pattern pattern_;
+    std::uint32_t seed_;
+    bool gap_fill_;
+    int budget_;
+    bool falloff_;
+    int budget_edge_;
+    bool smooth_;
+    int radius_;
+    float depth_tolerance_;
+    int refine_steps_;
+    bool grow_query_;
+    float normal_offset_, depth_bias_;
+    std::unique_ptr<DepthRanges> ranges_;
+    std::unique_ptr<bitmask::LoqTargets> targets_;
+    std::unique_ptr<bitmask::MicroRects> rects_;
+    gl::Texture receives_, masks_, edges_;
+    gl::Program classify_, smooth_program_, visibility_;
+    gl::Buffer stats_;
+    passes::Fullscreen fullscreen_;
+};
+
+}  // namespace
+
+const TechniqueInfo kBitmaskTechnique = {
+    "bitmask",
+    "receiver-driven soft shadow mapping (Schwarz & Stamminger 2007/2008): micropatches "
+    "back-projected into occlusion bitmasks, budget levels blended smoothly",
+    kBitmaskParams,
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Bitmask>(p); }};
+
+}  // namespace penumbra::techniques

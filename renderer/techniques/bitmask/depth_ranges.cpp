@@ -1,0 +1,93 @@
+// `bitmask`'s light depth map and acceleration structures: see depth_ranges.h.
+#include "renderer/techniques/bitmask/depth_ranges.h"
+
+#include <algorithm>
+
+#include "renderer/core/error.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/shadow_maps.h"
+
+namespace penumbra::techniques::bitmask {
+namespace {
+int log2Of(int n) {
+    int l = 0;
+    while ((1 << (l + 1)) <= n) ++l;
+    return l;
+}
+GLuint groupsFor(int size) {
+    return static_cast<GLuint>((size + 7) / 8);
+}
+}  // namespace
+
+DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
+    : map_size_(map_size), levels_(log2Of(map_size) + 1) {
+    hsm_ = gl::createTexture(GL_TEXTURE_2D, "bitmask hsm");
+    glTextureStorage2D(hsm_.id(), levels_, GL_RG32F, map_size_, map_size_);
+    glTextureParameteri(hsm_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTextureParameteri(hsm_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(hsm_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(hsm_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    depth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, map_size_, map_size_, "bitmask map depth");
+    fbo_ = gl::createFramebuffer("bitmask light depth map");
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hsm_.id(), 0);
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError("bitmask: light depth map: framebuffer incomplete");
+    depth_program_ = gl::buildProgram(
+        "bitmask light depth",
+        {"techniques/bitmask/light_depth.vert", "techniques/bitmask/light_depth.frag"});
+    hsm_program_ = gl::buildProgram("bitmask hsm", {"techniques/bitmask/hsm.comp"});
+    if (accel == Accel::Hsm) return;
+    mssm_base_ = accel == Accel::Ysm ? std::max(0, log2Of(map_size_ / ysm_size)) : 0;
+    const int size = map_size_ >> mssm_base_;
+    mssm_layers_ = log2Of(size) + 1;
+    mssm_ = gl::createTexture2DArray(GL_RG32F, size, size, mssm_layers_,
+                                     accel == Accel::Ysm ? "bitmask ysm" : "bitmask mssm");
+    mssm_program_ = gl::buildProgram("bitmask mssm", {"techniques/bitmask/mssm.comp"});
+}
+
+void DepthRanges::renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
+                            const glm::mat4& view_proj) {
+    passes::beginDepthMapDraw(fbo_.id(), map_size_);
+    const float empty[4] = {kEmpty, kEmpty, 0.0f, 0.0f}, far = 1.0f;
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    glUseProgram(depth_program_.id());
+    gl::setUniform(depth_program_, "u_view_proj", view_proj);
+    gl::setUniform(depth_program_, "u_light_centre", light.position);
+    gl::setUniform(depth_program_, "u_light_forward", light.forward());
+    scene.draw(depth_program_, passes::GpuScene::Filter::Casters);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void DepthRanges::buildHsm() {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glUseProgram(hsm_program_.id());
+    for (int level = 1; level < levels_; ++level) {
+        glBindImageTexture(0, hsm_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+        glBindImageTexture(1, hsm_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+        const GLuint groups = groupsFor(map_size_ >> level);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    glUseProgram(0);
+}
+
+void DepthRanges::buildMssm() {
+    if (mssm_layers_ == 0) return;
+    const int size = map_size_ >> mssm_base_;
+    glUseProgram(mssm_program_.id());
+    glBindImageTexture(0, hsm_.id(), mssm_base_, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(1, mssm_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
+    for (int layer = 0; layer < mssm_layers_; ++layer) {
+        gl::setUniform(mssm_program_, "u_layer", layer);
+        const GLuint groups = groupsFor(size);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::techniques::bitmask

@@ -1,0 +1,47 @@
+// `bitmask`'s light depth map and its acceleration structures (Schwarz & Stamminger, 3 and 6):
+// the HSM, a min/max mip pyramid of distances from the light's plane; the MSSM, per texel the
+// depth range of every power-of-two neighbourhood; the YSM, an MSSM built from a coarser HSM
+// level. All are built on the GPU by compute shaders.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl/handles.h"
+#include "renderer/passes/gpu_scene.h"
+#include "renderer/scene/scene.h"
+
+namespace penumbra::techniques::bitmask {
+
+enum class Accel { Hsm, Mssm, Ysm };
+
+class DepthRanges {
+public:
+    // MAP_SIZE (a power of two) texels per side; for the YSM, the MSSM part has YSM_SIZE.
+    DepthRanges(int map_size, Accel accel, int ysm_size);
+
+    // Renders the casters' distance along the light's forward axis (empty texels: kEmpty)
+    // into HSM level 0, through VIEW_PROJ from the light's centre.
+    void renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
+                   const glm::mat4& view_proj);
+    // Builds HSM levels 1.. from level 0.
+    void buildHsm();
+    // Builds the MSSM (from HSM level 0) or the YSM's MSSM part (from HSM level mssmBase()).
+    void buildMssm();
+
+    int mapSize() const { return map_size_; }
+    int levels() const { return levels_; }
+    int mssmBase() const { return mssm_base_; }  // the HSM level that is MSSM layer 0
+    int mssmLayers() const { return mssm_layers_; }
+    const gl::Texture& hsm() const { return hsm_; }    // RG32F mips: (min, max) distance
+    const gl::Texture& mssm() const { return mssm_; }  // RG32F array, layer k: 2^k neighbourhoods
+
+    static constexpr float kEmpty = 1e30f;  // the distance stored where no caster is
+
+private:
+    int map_size_, levels_, mssm_base_ = 0, mssm_layers_ = 0;
+    gl::Texture hsm_, depth_, mssm_;
+    gl::Framebuffer fbo_;
+    gl::Program depth_program_, hsm_program_, mssm_program_;
+};
+
+}  // namespace penumbra::techniques::bitmask

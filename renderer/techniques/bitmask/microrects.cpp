@@ -1,0 +1,41 @@
+// `bitmask`'s microrects: see microrects.h.
+#include "renderer/techniques/bitmask/microrects.h"
+
+#include "renderer/gl/program.h"
+#include "renderer/techniques/bitmask/depth_ranges.h"
+
+namespace penumbra::techniques::bitmask {
+
+MicroRects::MicroRects(int map_size) : map_size_(map_size), levels_(1) {
+    while ((map_size_ >> levels_) > 0) ++levels_;
+    auto mipChain = [&](GLenum format, const char* label) {
+        gl::Texture t = gl::createTexture(GL_TEXTURE_2D, label);
+        glTextureStorage2D(t.id(), levels_, format, map_size_, map_size_);
+        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        return t;
+    };
+    extent_ = mipChain(GL_RGBA32F, "bitmask microrect extents");
+    depth_ = mipChain(GL_R32F, "bitmask microrect depths");
+    program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"});
+}
+
+void MicroRects::build(const gl::Texture& hsm) {
+    glUseProgram(program_.id());
+    gl::setUniform(program_, "u_empty", DepthRanges::kEmpty);
+    glBindImageTexture(0, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    for (int level = 0; level < levels_; ++level) {
+        gl::setUniform(program_, "u_from_hsm", level == 0 ? 1 : 0);
+        const int finer = level == 0 ? 0 : level - 1;
+        glBindImageTexture(1, extent_.id(), finer, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(2, depth_.id(), finer, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+        glBindImageTexture(3, extent_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(4, depth_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        const GLuint groups = static_cast<GLuint>(((map_size_ >> level) + 7) / 8);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::techniques::bitmask

@@ -1,0 +1,26 @@
+// `bitmask`'s microrects (Schwarz & Stamminger 5.2): per level, one micro-occluder per texel
+// whose extent is any rectangle of level-0 texels around its reference point, built by a
+// greedy two-pass merge of the next finer level; extent and depth in two mip-chained textures.
+#pragma once
+
+#include "renderer/gl/handles.h"
+
+namespace penumbra::techniques::bitmask {
+
+class MicroRects {
+public:
+    explicit MicroRects(int map_size);
+    // Builds every level from HSM (level 0 of an RG32F (min, max) pyramid, kEmpty where no
+    // caster is).
+    void build(const gl::Texture& hsm);
+
+    const gl::Texture& extent() const { return extent_; }  // RGBA32F: x0, y0, x1, y1 (level 0)
+    const gl::Texture& depth() const { return depth_; }    // R32F: nearest merged distance
+
+private:
+    int map_size_, levels_;
+    gl::Texture extent_, depth_;
+    gl::Program program_;
+};
+
+}  // namespace penumbra::techniques::bitmask
