@@ -53,7 +53,9 @@ TEST(SummedAreaTableGL, MatchesDoubleSums) {
             for (int y = 0; y < n1; ++y)
                 for (int x = 0; x < n1; ++x) {
                     const float got = table[static_cast<size_t>(((l * n1 + y) * n1 + x) * 4 + c)];
-                    if (x == 0 || y == 0) EXPECT_EQ(got, 0.0f) << x << "," << y;
+                    if (x == 0 || y == 0) {
+                        EXPECT_EQ(got, 0.0f) << x << "," << y;
+                    }
                     max_error = std::max(max_error, std::fabs(got - s[size_t(y * n1 + x)]));
                 }
         }
