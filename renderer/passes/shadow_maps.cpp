@@ -12,6 +12,13 @@ namespace {
 constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
 }
 
+void setLightFrameUniforms(const gl::Program& program, const scene::RectLight& light) {
+    gl::setUniform(program, "u_light_centre", light.position);
+    gl::setUniform(program, "u_light_right", light.right());
+    gl::setUniform(program, "u_light_up", light.upAxis());
+    gl::setUniform(program, "u_light_forward", light.forward());
+}
+
 void beginDepthMapDraw(GLuint fbo, int size) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glViewport(0, 0, size, size);
@@ -153,10 +160,7 @@ void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batc
     gl::setUniform(program_, "u_pcf", s.pcf);
     gl::setUniform(program_, "u_normal_offset", s.normal_offset);
     gl::setUniform(program_, "u_depth_bias", s.depth_bias);
-    gl::setUniform(program_, "u_light_right", light.right());
-    gl::setUniform(program_, "u_light_up", light.upAxis());
-    gl::setUniform(program_, "u_light_forward", light.forward());
-    gl::setUniform(program_, "u_light_centre", light.position);
+    setLightFrameUniforms(program_, light);
     glDisable(GL_DEPTH_TEST);
     fullscreen_.draw();
     glUseProgram(0);

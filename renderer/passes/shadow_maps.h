@@ -33,6 +33,10 @@ static_assert(sizeof(SampleView) == 160);
 // unculled draw: the state of every light depth map.
 void beginDepthMapDraw(GLuint fbo, int size);
 
+// Sets PROGRAM's u_light_centre, u_light_right, u_light_up and u_light_forward: the light's
+// frame, in which shaders project receivers (glsl/common/sample_view.glsl's convention).
+void setLightFrameUniforms(const gl::Program& program, const scene::RectLight& light);
+
 // The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
                           const Bounds& casters, float weight, int map_size);

@@ -72,32 +72,31 @@ double closedFormShadowMae(const output::Image& img, double light_half, long min
     return n ? sum / static_cast<double>(n) : 1.0;
 }
 
-double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels) {
-    const auto& vr = channel(ref, "visibility");
-    const auto& vt = channel(test, "visibility");
-    const auto& id = channel(test, "id");
+namespace {
+// Mean |a - truth| over pixels where either is below 0.999 and, with ID, whose object is 0.
+double meanShadowDifference(const std::vector<float>& a, const std::vector<float>& truth,
+                            const std::vector<float>* id, long min_pixels) {
     double sum = 0;
     long n = 0;
-    for (size_t i = 0; i < vr.size(); ++i) {
-        if (id[i] != 0.0f || (vr[i] >= 0.999f && vt[i] >= 0.999f)) continue;
-        sum += std::fabs(double(vr[i]) - double(vt[i]));
+    for (size_t i = 0; i < a.size(); ++i) {
+        if ((id && (*id)[i] != 0.0f) || (a[i] >= 0.999f && truth[i] >= 0.999f)) continue;
+        sum += std::fabs(double(a[i]) - double(truth[i]));
         ++n;
     }
-    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the floor";
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the "
+                             << (id ? "floor" : "image");
     return n ? sum / static_cast<double>(n) : 1.0;
+}
+}  // namespace
+
+double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels) {
+    return meanShadowDifference(channel(test, "visibility"), channel(ref, "visibility"),
+                                &channel(test, "id"), min_pixels);
 }
 
 double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& truth,
                        long min_pixels) {
-    double sum = 0;
-    long n = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (a[i] >= 0.999f && truth[i] >= 0.999f) continue;
-        sum += std::fabs(double(a[i]) - double(truth[i]));
-        ++n;
-    }
-    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the image";
-    return n ? sum / double(n) : 1.0;
+    return meanShadowDifference(a, truth, nullptr, min_pixels);
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

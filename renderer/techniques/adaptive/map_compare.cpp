@@ -71,10 +71,7 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
     gl::setUniform(program_, "u_tests", s.tests ? 1 : 0);
     gl::setUniform(program_, "u_normal_offset", s.normal_offset);
     gl::setUniform(program_, "u_depth_bias", s.depth_bias);
-    gl::setUniform(program_, "u_light_centre", light.position);
-    gl::setUniform(program_, "u_light_right", light.right());
-    gl::setUniform(program_, "u_light_up", light.upAxis());
-    gl::setUniform(program_, "u_light_forward", light.forward());
+    passes::setLightFrameUniforms(program_, light);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MAX);

@@ -12,6 +12,7 @@
 #include "renderer/core/error.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
+#include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/bitmask/loq_targets.h"
 #include "renderer/techniques/bitmask/mask_textures.h"
@@ -187,10 +188,7 @@ private:
         glBindTextureUnit(4, ranges_->hsm().id());
         if (accel_ != Accel::Hsm) glBindTextureUnit(5, ranges_->mssm().id());
         gl::setUniform(p, "u_mssm_base", ranges_->mssmBase());
-        gl::setUniform(p, "u_light_centre", light.position);
-        gl::setUniform(p, "u_light_right", light.right());
-        gl::setUniform(p, "u_light_up", light.upAxis());
-        gl::setUniform(p, "u_light_forward", light.forward());
+        passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_win_lo", window.lo);
         gl::setUniform(p, "u_texel", window.size / static_cast<float>(map_size_));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "renderer/passes/fullscreen.h"
+#include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/css/csm_maps.h"
 #include "renderer/techniques/css/css_settings.h"
 #include "renderer/techniques/environment_lights.h"
@@ -88,10 +89,7 @@ private:
         glBindTextureUnit(0, ctx.gbuffer.position().id());
         glBindTextureUnit(1, maps_->filtered(filter).id());
         glBindTextureUnit(2, ctx.gbuffer.normal().id());
-        gl::setUniform(p, "u_light_centre", light.position);
-        gl::setUniform(p, "u_light_right", light.right());
-        gl::setUniform(p, "u_light_up", light.upAxis());
-        gl::setUniform(p, "u_light_forward", light.forward());
+        passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_window_lo", w.lo);
         gl::setUniform(p, "u_window_size", w.size);

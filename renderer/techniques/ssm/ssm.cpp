@@ -10,6 +10,7 @@
 #include "renderer/core/error.h"
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/passes/fullscreen.h"
+#include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/registry_entries.h"
 #include "renderer/techniques/ssm/light_windows.h"
 #include "renderer/techniques/ssm/micro_patches.h"
@@ -284,10 +285,7 @@ private:
         glBindTextureUnit(2, receives_.id());
         glBindTextureUnit(3, soft_maps_[0]->occlusion.id());
         if (two_sided_) glBindTextureUnit(4, soft_maps_[1]->occlusion.id());
-        gl::setUniform(p, "u_light_centre", light.position);
-        gl::setUniform(p, "u_light_right", light.right());
-        gl::setUniform(p, "u_light_up", light.upAxis());
-        gl::setUniform(p, "u_light_forward", light.forward());
+        passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
         gl::setUniform(p, "u_ssm_size", soft.size);
         gl::setUniform(p, "u_shadowed", shadowed ? 1 : 0);
