@@ -38,6 +38,7 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
         {"techniques/bitmask/light_depth.vert", "techniques/bitmask/light_depth.frag"});
     hsm_program_ = gl::buildProgram("bitmask hsm", {"techniques/bitmask/hsm.comp"});
     if (accel == Accel::Hsm) return;
+    ysm_ = accel == Accel::Ysm;
     mssm_base_ = accel == Accel::Ysm ? std::max(0, log2Of(map_size_ / ysm_size)) : 0;
     const int size = map_size_ >> mssm_base_;
     mssm_layers_ = log2Of(size) + 1;
@@ -81,11 +82,17 @@ void DepthRanges::buildMssm() {
     glUseProgram(mssm_program_.id());
     glBindImageTexture(0, hsm_.id(), mssm_base_, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
     glBindImageTexture(1, mssm_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
-    for (int layer = 0; layer < mssm_layers_; ++layer) {
+    // The YSM never queries layer 0 (depth_ranges.h): layer 1 is built from the HSM level.
+    gl::setUniform(mssm_program_, "u_from_hsm", ysm_ ? 1 : 0);
+    const GLuint groups = groupsFor(size);
+    for (int layer = ysm_ ? 1 : 0; layer < mssm_layers_;) {
+        // Layer 0 alone (a copy); above it, two layers per dispatch where two are left.
+        const bool pair = layer > 0 && layer + 1 < mssm_layers_;
         gl::setUniform(mssm_program_, "u_layer", layer);
-        const GLuint groups = groupsFor(size);
+        gl::setUniform(mssm_program_, "u_pair", pair ? 1 : 0);
         glDispatchCompute(groups, groups, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        layer += pair ? 2 : 1;
     }
     glUseProgram(0);
 }

@@ -26,6 +26,8 @@ public:
     // Builds HSM levels 1.. from level 0.
     void buildHsm();
     // Builds the MSSM (from HSM level 0) or the YSM's MSSM part (from HSM level mssmBase()).
+    // The YSM's layer 0 is left unwritten: a query reaches the MSSM part only when its extent
+    // at level mssmBase() is 3 texels or more (search.glsl), which layer 0 never serves.
     void buildMssm();
 
     int mapSize() const { return map_size_; }
@@ -39,6 +41,7 @@ public:
 
 private:
     int map_size_, levels_, mssm_base_ = 0, mssm_layers_ = 0;
+    bool ysm_ = false;
     gl::Texture hsm_, depth_, mssm_;
     gl::Framebuffer fbo_;
     gl::Program depth_program_, hsm_program_, mssm_program_;
