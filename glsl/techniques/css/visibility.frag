@@ -109,28 +109,31 @@ vec4 cssWeights(int i, float ds) {
     return 2 * i + 2 > ORDER ? vec4(w.xy, 0.0, 0.0) : w;
 }
 
-// The filtered complementary test fbar (1 = blocked) over kernel K at shifted receiver depth
-// DS, given EMPTY = fbar(ds, 1), the test of an empty texel; and, when WITH_Z, the filtered
-// fbar z (CSM-Z). The basis is
-// stored minus its empty-texel value, so the series sums give sum_i w_i (fbar(d, z_i) - EMPTY)
-// over the kernel; adding EMPTY back for the covered texels only (coverage from the z layer)
-// gives the sum over casters alone. An empty texel never blocks, so it adds exactly 0 instead
-// of the truncated series' ringing, which would swamp a thin caster in a wide kernel.
-vec2 filteredTest(Kernel k, float ds, float empty, bool with_z) {
+// The filtered complementary test fbar (1 = blocked) over kernel K, given the series weights
+// W of the shifted receiver depth (cssWeights, the same for every kernel of a pixel) and
+// EMPTY = fbar(ds, 1), the test of an empty texel; and, when WITH_Z, the filtered fbar z
+// (CSM-Z). The basis is stored minus its empty-texel value, so the series sums give
+// sum_i w_i (fbar(d, z_i) - EMPTY) over the kernel; adding EMPTY back for the covered texels
+// only (coverage from the z layer) gives the sum over casters alone. An empty texel never
+// blocks, so it adds exactly 0 instead of the truncated series' ringing, which would swamp a
+// thin caster in a wide kernel. Z_COVERAGE is the kernel's mean of the z layer, when the
+// caller has it already (the first search's early-out).
+vec2 filteredTestWith(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z, vec2 z_coverage) {
     float f = 0.0, fz = 0.0;
     for (int i = 0; i < CSS_PAIRS; ++i) {
-        vec4 w = cssWeights(i, ds);
         vec4 b = boxMean(k, i);  // cos, sin, cos, sin
-        f += 2.0 * (w.x * b.x - w.y * b.y + w.z * b.z - w.w * b.w);
+        f += 2.0 * (w[i].x * b.x - w[i].y * b.y + w[i].z * b.z - w[i].w * b.w);
         if (with_z) {
             vec4 bz = boxMean(k, CSS_PAIRS + i);
-            fz += 2.0 * (w.x * bz.x - w.y * bz.y + w.z * bz.z - w.w * bz.w);
+            fz += 2.0 * (w[i].x * bz.x - w[i].y * bz.y + w[i].z * bz.z - w[i].w * bz.w);
         }
     }
-    vec2 z_coverage = boxMean(k, 2 * CSS_PAIRS).xy;  // mean of (z - 1), coverage
     f += z_coverage.y * empty;
     fz += 0.5 * z_coverage.x + z_coverage.y * empty;
     return vec2(f, fz);
+}
+vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
+    return filteredTestWith(k, w, empty, with_z, boxMean(k, 2 * CSS_PAIRS).xy);  // mean of (z - 1), coverage
 }
 
 // The fraction of the light above the tangent plane of receiver P (normal N): the part below
@@ -171,20 +174,23 @@ void main() {
     float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
     float ds = max(d - u_ring_shift, 0.0);
 
-    // fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k = 1/2 - 2 sum_k sin(c_k ds) / c_k,
-    // since sin(c_k (x - 1)) = -sin(c_k x) for odd multiples c_k of pi.
-    float empty = 0.5;
-    for (int i = 0; i < CSS_PAIRS; ++i) {
-        vec4 w = cssWeights(i, ds);
-        empty -= 2.0 * (w.x + w.z);
-    }
-
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
     Kernel k0 = makeKernel(c, w0, SEARCH_TAPS);
     // No caster under the search kernel: nothing can block (empty texels add exactly 0).
-    if (boxMean(k0, 2 * CSS_PAIRS).y <= 1e-6) return;
-    vec2 search = filteredTest(k0, ds, empty, true);
+    vec2 z_coverage = boxMean(k0, 2 * CSS_PAIRS).xy;
+    if (z_coverage.y <= 1e-6) return;
+
+    // The series weights of ds, once per pixel: every kernel below uses them.
+    // fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k = 1/2 - 2 sum_k sin(c_k ds) / c_k,
+    // since sin(c_k (x - 1)) = -sin(c_k x) for odd multiples c_k of pi.
+    vec4 w[CSS_PAIRS];
+    float empty = 0.5;
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        w[i] = cssWeights(i, ds);
+        empty -= 2.0 * (w[i].x + w[i].z);
+    }
+    vec2 search = filteredTestWith(k0, w, empty, true, z_coverage);
     if (search.x < 1e-3) return;  // no blocker in the search area
     // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
     // cone cut at the plane of the current z_avg instead of the near plane (the paper's
@@ -192,8 +198,8 @@ void main() {
     float z_avg = clamp(search.y / search.x, 0.0, d);
     float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     for (int i = 0; i < SEARCH_STEPS; ++i) {
-        vec2 w = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-        vec2 refined = filteredTest(makeKernel(c, w, SEARCH_TAPS), ds, empty, true);
+        vec2 ws = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
+        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS), w, empty, true);
         if (refined.x < 1e-3) break;  // keep the last estimate
         z_avg = clamp(refined.y / refined.x, 0.0, d);
         zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
@@ -202,7 +208,7 @@ void main() {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-    float f = filteredTest(makeKernel(c, w1, MIP_TAPS), ds, empty, false).x;
+    float f = filteredTest(makeKernel(c, w1, MIP_TAPS), w, empty, false).x;
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
     o_visibility = vec4(horizon * pow(1.0 - s, p), 0.0, 0.0, 0.0);
