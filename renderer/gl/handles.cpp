@@ -9,6 +9,12 @@ Texture createTexture(GLenum target, std::string_view label) {
     return Texture(id, label);
 }
 
+Sampler createSampler(std::string_view label) {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    return Sampler(id, label);
+}
+
 Buffer createBuffer(std::string_view label) {
     GLuint id = 0;
     glCreateBuffers(1, &id);

@@ -30,6 +30,10 @@ struct ProgramKind {
     static constexpr GLenum kLabel = GL_PROGRAM;
     static void destroy(GLuint id) { glDeleteProgram(id); }
 };
+struct SamplerKind {
+    static constexpr GLenum kLabel = GL_SAMPLER;
+    static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
 struct QueryKind {
     static constexpr GLenum kLabel = GL_QUERY;
     static void destroy(GLuint id) { glDeleteQueries(1, &id); }
@@ -72,10 +76,12 @@ using Framebuffer = Handle<FramebufferKind>;
 using VertexArray = Handle<VertexArrayKind>;
 using Program = Handle<ProgramKind>;
 using Query = Handle<QueryKind>;
+using Sampler = Handle<SamplerKind>;
 
 // Creation helpers (DSA).
 Texture createTexture(GLenum target, std::string_view label);
 Buffer createBuffer(std::string_view label);
+Sampler createSampler(std::string_view label);
 Framebuffer createFramebuffer(std::string_view label);
 VertexArray createVertexArray(std::string_view label);
 Query createQuery(GLenum target, std::string_view label);

@@ -29,6 +29,7 @@ in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
 layout(binding = 2) uniform sampler2D u_normal;
+layout(binding = 3) uniform sampler2DArray u_basis_search;  // u_basis, bilinear in one level
 
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
@@ -51,13 +52,15 @@ layout(location = 1) out vec4 o_z_avg;
 layout(location = 2) out vec4 o_filter_width;
 
 // A box kernel centred at C with size S (both in texels of the N x N map), prepared once and
-// applied to each basis layer.
+// applied to each basis layer. SEARCH marks the blocker searches' kernels: with mipmaps they
+// read through u_basis_search (bilinear in the nearest level, half the texels of trilinear
+// filtering); the final test keeps trilinear filtering.
 #if FILTER_SAT
 struct Kernel {
     vec2 lo, hi;  // the box clipped to the map, in SAT texture coordinates
     float inv_area;
 };
-Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side, bool search) {
     // Outside the map every (centred) basis value is 0: clip the box, divide by its full area.
     float n1 = u_map_size + 1.0;
     Kernel k;
@@ -78,8 +81,9 @@ struct Kernel {
     vec2 first, step;  // a grid of taps, in texture coordinates
     ivec2 taps;
     float lod;
+    bool search;  // a blocker search: through u_basis_search
 };
-Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
+Kernel makeKernel(vec2 c, vec2 s, int taps_per_side, bool search) {
     // TAPS x TAPS trilinear taps per square of the shorter side (a rectangle gets more along
     // its longer axis, at most MAX_ANISO times more: anisotropic filtering), each at GL's level
     // for its footprint, log2(width): a grid of taps follows a box kernel more closely than one
@@ -91,13 +95,15 @@ Kernel makeKernel(vec2 c, vec2 s, int taps_per_side) {
     k.lod = max(log2(max(footprint.x, footprint.y)), 0.0);
     k.step = footprint / u_map_size;
     k.first = (c - 0.5 * s + 0.5 * footprint) / u_map_size;
+    k.search = search;
     return k;
 }
 vec4 boxMean(Kernel k, int layer) {
     vec4 sum = vec4(0.0);
     for (int y = 0; y < k.taps.y; ++y)
         for (int x = 0; x < k.taps.x; ++x)
-            sum += textureLod(u_basis, vec3(k.first + vec2(x, y) * k.step, layer), k.lod);
+            sum += k.search ? textureLod(u_basis_search, vec3(k.first + vec2(x, y) * k.step, layer), k.lod)
+                            : textureLod(u_basis, vec3(k.first + vec2(x, y) * k.step, layer), k.lod);
     return sum / float(k.taps.x * k.taps.y);
 }
 #endif
@@ -176,7 +182,7 @@ void main() {
 
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
-    Kernel k0 = makeKernel(c, w0, SEARCH_TAPS);
+    Kernel k0 = makeKernel(c, w0, SEARCH_TAPS, true);
     // No caster under the search kernel: nothing can block (empty texels add exactly 0).
     vec2 z_coverage = boxMean(k0, 2 * CSS_PAIRS).xy;
     if (z_coverage.y <= 1e-6) return;
@@ -199,7 +205,7 @@ void main() {
     float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     for (int i = 0; i < SEARCH_STEPS; ++i) {
         vec2 ws = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS), w, empty, true);
+        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS, true), w, empty, true);
         if (refined.x < 1e-3) break;  // keep the last estimate
         z_avg = clamp(refined.y / refined.x, 0.0, d);
         zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
@@ -208,7 +214,7 @@ void main() {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-    float f = filteredTest(makeKernel(c, w1, MIP_TAPS), w, empty, false).x;
+    float f = filteredTest(makeKernel(c, w1, MIP_TAPS, false), w, empty, false).x;
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
     o_visibility = vec4(horizon * pow(1.0 - s, p), 0.0, 0.0, 0.0);

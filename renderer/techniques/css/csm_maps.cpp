@@ -42,6 +42,12 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
     glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
     glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
     glTextureParameterfv(basis_.id(), GL_TEXTURE_BORDER_COLOR, border);
+    search_sampler_ = gl::createSampler("css search sampler");
+    glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(search_sampler_.id(), GL_TEXTURE_BORDER_COLOR, border);
     if (sat) sat_ = std::make_unique<passes::SummedAreaTable>(map_size, layers_, "css basis SAT");
 }
 

@@ -49,6 +49,9 @@ public:
     // Prefilters the basis with FILTER; filtered(FILTER) is then ready for lookups.
     void prefilter(Filter filter);
     const gl::Texture& filtered(Filter filter) const;
+    // For the mipmap's blocker searches: bilinear within the nearest level (half the texels
+    // of trilinear filtering; an average depth needs less than the final test).
+    const gl::Sampler& searchSampler() const { return search_sampler_; }
 
     int mapSize() const { return map_size_; }
 
@@ -56,6 +59,7 @@ private:
     int map_size_, layers_;
     ssm::DepthTarget depth_;
     gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
+    gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;
     gl::Program depth_program_, basis_program_;
 };

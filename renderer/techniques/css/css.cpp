@@ -89,6 +89,8 @@ private:
         glBindTextureUnit(0, ctx.gbuffer.position().id());
         glBindTextureUnit(1, maps_->filtered(filter).id());
         glBindTextureUnit(2, ctx.gbuffer.normal().id());
+        glBindTextureUnit(3, maps_->filtered(filter).id());  // through the search sampler
+        glBindSampler(3, maps_->searchSampler().id());
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_window_lo", w.lo);
@@ -102,6 +104,7 @@ private:
         gl::setUniform(p, "u_sharpen_a", settings_.sharpen_a);
         gl::setUniform(p, "u_sharpen_b", settings_.sharpen_b);
         fullscreen_.draw();
+        glBindSampler(3, 0);
         glUseProgram(0);
     }
 
