@@ -28,6 +28,7 @@ void FrameRenderer::setParams(const Params& params) {
     if (technique_ && params.json() == params_.json()) return;
     params_ = params;
     technique_ = info_.create(params_);
+    technique_->readInputs(first_);
     const int before = lights_;
     environment_ = {};
     if (first_.environment && info_.environment) environment_ = info_.environment(params_, first_);
