@@ -34,6 +34,7 @@ Shade::Shade(int width, int height, int samples)
                                      {"passes/fullscreen.vert", "passes/msaa_classify.frag"});
         samples_program_ = gl::buildProgram(
             "shade samples", {"passes/fullscreen.vert", "passes/shade_samples.frag"});
+        pixels_ = gl::createQuery(GL_SAMPLES_PASSED, "shade msaa pixels");
     }
     if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("shade: framebuffer incomplete");
@@ -112,10 +113,19 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     gl::setUniform(p, "u_light_count", static_cast<int>(lights.size()));
     gl::setUniform(p, "u_samples", samples_);
     gl::setUniform(p, "u_guide", guide_ == SampleGuide::Depth ? 1 : 0);
+    glBeginQuery(GL_SAMPLES_PASSED, pixels_.id());
     fullscreen_.draw();
+    glEndQuery(GL_SAMPLES_PASSED);
     glUseProgram(0);
     glDisable(GL_STENCIL_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+double Shade::samplePixels() const {
+    if (!pixels_) return 0.0;
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(pixels_.id(), GL_QUERY_RESULT, &n);
+    return static_cast<double>(n);
 }
 
 }  // namespace penumbra::passes

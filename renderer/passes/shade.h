@@ -36,6 +36,8 @@ public:
                        const gl::Texture& visibility_layers,
                        const std::vector<scene::RectLight>& lights);
     void setSampleGuide(SampleGuide guide) { guide_ = guide; }
+    // Pixels the last renderSamples() shaded per sample (waits for the GPU).
+    double samplePixels() const;
     const gl::Texture& beauty() const { return beauty_; }          // RGBA32F, a = coverage
     const gl::Texture& visibility() const { return visibility_; }  // R32F
 
@@ -47,6 +49,7 @@ private:
     gl::Texture beauty_, visibility_, stencil_;
     gl::Framebuffer fbo_;
     gl::Program program_, classify_, samples_program_;  // the last two for SAMPLES > 1
+    gl::Query pixels_;                                  // samples passed, SAMPLES > 1
     gl::DynamicBuffer lights_{"lights"};
     Fullscreen fullscreen_;
 };

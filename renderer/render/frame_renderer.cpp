@@ -60,10 +60,15 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
     }
     ctx.light = -1;
     ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_); });
-    if (sample_gbuffer_)
+    if (sample_gbuffer_) {
         ctx.pass("shade_msaa", [&] {
             shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), all_lights_);
         });
+        // The pixels shaded per sample: where a sample shows another surface than the pixel.
+        const double pixels = shade_.samplePixels();
+        stats["msaa_pixels"] = pixels;
+        stats["msaa_share"] = pixels / (double(width_) * double(height_));
+    }
     return stats;
 }
 

@@ -56,6 +56,7 @@ t = json.load(open(sys.argv[1]))
 assert t["resolution"] == {"width": 64, "height": 48, "samples": 4}, t["resolution"]
 names = [p["name"] for p in t["passes"]]
 assert names[:2] == ["gbuffer", "gbuffer_msaa"] and names.index("shade") + 1 == names.index("shade_msaa"), names
+assert 0 < t["stats"]["msaa_pixels"] < 64 * 48 and t["stats"]["msaa_share"] < 0.5, t["stats"]
 one = json.load(open(sys.argv[2]))
 assert one["resolution"]["samples"] == 1 and "shade_msaa" not in [p["name"] for p in one["passes"]]
 PY
