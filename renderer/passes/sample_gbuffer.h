@@ -16,7 +16,7 @@
 namespace penumbra::passes {
 
 // Offsets in pixels from the pixel centre (x right, y up) of COUNT samples (1, 2, 4 or 8): the
-// standard Direct3D 10.1 patterns, which every count of a GPU's MSAA also uses.
+// standard Direct3D 10.1 patterns (those of most GPUs' MSAA).
 std::span<const glm::vec2> sampleOffsets(int count);
 
 // PROJECTION shifted so that pixel centres see the scene at OFFSET pixels from them.

@@ -5,12 +5,12 @@
 #include "techniques/bitmask/search.glsl"
 
 uniform int u_refine_steps;
-uniform int u_budget;       // b_mo at the centre (0: unlimited)
-uniform int u_budget_edge;  // b_mo at the corners when u_budget_falloff = 1
+uniform int u_budget;         // b_mo at the centre (0: unlimited)
+uniform int u_budget_edge;    // b_mo at the corners with the falloff, where the map is 0
 uniform int u_budget_falloff;
-uniform int u_budget_map_on;  // 1: scale by the budget map
+uniform int u_budget_map_on;  // 1: u_budget_map moves b_mo toward u_budget_edge
+uniform int u_grow_query;     // 1: grow query areas to the budget level's texels
 layout(binding = 12) uniform sampler2D u_budget_map;  // v in [0, 1], stretched over the image
-uniform int u_grow_query;   // 1: grow query areas to the budget level's texels
 
 layout(location = 0) out vec4 o_area;  // level-0 texels (x0, y0, x1, y1)
 layout(location = 1) out vec4 o_loq;   // (level or -1, class, budget, 0)
