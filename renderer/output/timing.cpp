@@ -53,7 +53,7 @@ nlohmann::json toJson(const FrameReport& r) {
             {"technique", r.technique},
             {"params", r.params},
             {"backend", r.backend},
-            {"resolution", {{"width", r.width}, {"height", r.height}}},
+            {"resolution", {{"width", r.width}, {"height", r.height}, {"samples", r.samples}}},
             {"passes", passes},
             {"totals", totals},
             {"stats", r.stats},

@@ -23,6 +23,7 @@ struct FrameReport {
     nlohmann::json params;   // resolved technique parameters
     nlohmann::json backend;  // {"api", "device", "renderer", "version", "vendor"}
     int width = 0, height = 0;
+    int samples = 1;  // image.samples
     int warmup = 0;
     std::vector<PassTiming> passes;                    // in first-run order
     std::vector<double> frame_ms;                      // whole frame, per repeat

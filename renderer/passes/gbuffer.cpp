@@ -40,29 +40,33 @@ GBuffer::GBuffer(int width, int height)
         throw RuntimeError("gbuffer: framebuffer incomplete");
 }
 
-void GBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {
-    GLuint f = fbo_.id();
+void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
+                 const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection) {
     const float zero[4] = {0, 0, 0, 0};
     const GLint none[4] = {-1, -1, -1, -1};
     const float one = 1.0f;
-    glClearNamedFramebufferfv(f, GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(f, GL_COLOR, 1, zero);
-    glClearNamedFramebufferfv(f, GL_COLOR, 2, zero);
-    glClearNamedFramebufferiv(f, GL_COLOR, 3, none);
-    glClearNamedFramebufferfv(f, GL_DEPTH, 0, &one);
-    glBindFramebuffer(GL_FRAMEBUFFER, f);
-    glViewport(0, 0, width_, height_);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 2, zero);
+    glClearNamedFramebufferiv(fbo, GL_COLOR, 3, none);
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program_.id());
-    gl::setUniform(program_, "u_view", camera.view);
-    gl::setUniform(program_, "u_projection", camera.projection);
-    scene.draw(program_, GpuScene::Filter::All);
+    glUseProgram(program.id());
+    gl::setUniform(program, "u_view", view);
+    gl::setUniform(program, "u_projection", projection);
+    scene.draw(program, GpuScene::Filter::All);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void GBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {
+    drawGBuffer(fbo_.id(), width_, height_, program_, scene, camera.view, camera.projection);
 }
 
 }  // namespace penumbra::passes

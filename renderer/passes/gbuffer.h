@@ -17,6 +17,11 @@ struct CameraMatrices {
 
 CameraMatrices cameraMatrices(const scene::Camera& camera, int width, int height);
 
+// Clears FBO (colour 0-3: position, normal, albedo, id; and depth) and draws SCENE into it with
+// PROGRAM (glsl/passes/gbuffer.*) through VIEW and PROJECTION: the G-buffer passes' one draw.
+void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
+                 const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection);
+
 class GBuffer {
 public:
     GBuffer(int width, int height);

@@ -1,21 +1,24 @@
 // The shade pass: see shade.h.
 #include "renderer/passes/shade.h"
 
+#include <string>
+
 #include "renderer/core/error.h"
 #include "renderer/passes/bindings.h"
 
 namespace penumbra::passes {
 namespace {
-struct GpuLight {  // std430 mirror of shade.frag's GpuLight
+struct GpuLight {  // std430 mirror of GpuLight in glsl/passes/shading.glsl
     glm::vec4 corners[4];
     glm::vec4 forward;
     glm::vec4 radiance;
 };
 }  // namespace
 
-Shade::Shade(int width, int height)
+Shade::Shade(int width, int height, int samples)
     : width_(width),
       height_(height),
+      samples_(samples),
       beauty_(gl::createTexture2D(GL_RGBA32F, width, height, "beauty")),
       visibility_(gl::createTexture2D(GL_R32F, width, height, "visibility")),
       fbo_(gl::createFramebuffer("shade")),
@@ -24,12 +27,20 @@ Shade::Shade(int width, int height)
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, visibility_.id(), 0);
     const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glNamedFramebufferDrawBuffers(fbo_.id(), 2, bufs);
+    if (samples > 1) {
+        stencil_ = gl::createTexture2D(GL_STENCIL_INDEX8, width, height, "shade msaa pixels");
+        glNamedFramebufferTexture(fbo_.id(), GL_STENCIL_ATTACHMENT, stencil_.id(), 0);
+        classify_ = gl::buildProgram("msaa classify",
+                                     {"passes/fullscreen.vert", "passes/msaa_classify.frag"});
+        samples_program_ = gl::buildProgram(
+            "shade samples", {"passes/fullscreen.vert", "passes/shade_samples.frag"});
+        pixels_ = gl::createQuery(GL_SAMPLES_PASSED, "shade msaa pixels");
+    }
     if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("shade: framebuffer incomplete");
 }
 
-void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
-                   const std::vector<scene::RectLight>& lights) {
+void Shade::uploadLights(const std::vector<scene::RectLight>& lights) {
     std::vector<GpuLight> data;
     for (const auto& l : lights) {
         GpuLight g;
@@ -41,6 +52,11 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
         data.push_back(g);
     }
     lights_.upload(std::span<const GpuLight>(data), GL_SHADER_STORAGE_BUFFER, kBindingLights);
+}
+
+void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
+                   const std::vector<scene::RectLight>& lights) {
+    uploadLights(lights);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -54,6 +70,62 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     fullscreen_.draw();
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
+                          const gl::Texture& visibility_layers,
+                          const std::vector<scene::RectLight>& lights) {
+    if (samples.samples() != samples_)
+        throw RuntimeError("shade: built for " + std::to_string(samples_) + " samples, given " +
+                           std::to_string(samples.samples()));
+    uploadLights(lights);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glBindTextureUnit(0, gbuffer.position().id());
+    glBindTextureUnit(1, gbuffer.normal().id());
+    glBindTextureUnit(2, gbuffer.albedo().id());
+    glBindTextureUnit(3, visibility_layers.id());
+    glBindTextureUnit(4, gbuffer.id().id());
+    glBindTextureUnit(5, samples.position().id());
+    glBindTextureUnit(6, samples.normal().id());
+    glBindTextureUnit(7, samples.albedo().id());
+    glBindTextureUnit(8, samples.id().id());
+    // 1. Stencil 1 where a sample differs from the representative (colour untouched).
+    const GLint zero = 0;
+    glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &zero);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xff);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(classify_.id());
+    gl::setUniform(classify_, "u_samples", samples_);
+    fullscreen_.draw();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // 2. Those pixels shaded per sample and resolved, over render()'s result. The stencil test
+    // runs before the shader, so the other pixels cost nothing.
+    glStencilFunc(GL_EQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    const auto& p = samples_program_;
+    glUseProgram(p.id());
+    gl::setUniform(p, "u_light_count", static_cast<int>(lights.size()));
+    gl::setUniform(p, "u_samples", samples_);
+    gl::setUniform(p, "u_guide", guide_ == SampleGuide::Depth ? 1 : 0);
+    glBeginQuery(GL_SAMPLES_PASSED, pixels_.id());
+    fullscreen_.draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+    glUseProgram(0);
+    glDisable(GL_STENCIL_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+double Shade::samplePixels() const {
+    if (!pixels_) return 0.0;
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(pixels_.id(), GL_QUERY_RESULT, &n);
+    return static_cast<double>(n);
 }
 
 }  // namespace penumbra::passes

@@ -1,5 +1,8 @@
 // The shade pass: beauty from the G-buffer, every light's exact unshadowed irradiance and its
-// visibility layer; also the irradiance-weighted visibility PRODUCT.md defines.
+// visibility layer; also the irradiance-weighted visibility PRODUCT.md defines. With a sample
+// G-buffer (image.samples > 1) a second pass shades every sample of the pixels whose samples
+// differ from the pixel's representative, each with the visibility of the pixel its depth
+// matches best (Schwarz & Stamminger 2008, section 7), and averages them.
 #pragma once
 
 #include <vector>
@@ -9,23 +12,44 @@
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gbuffer.h"
+#include "renderer/passes/sample_gbuffer.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::passes {
 
+// Which pixel's visibility a sample that differs from its pixel's representative takes.
+enum class SampleGuide {
+    Depth,    // the 3 x 3 neighbour whose representative point lies nearest (the default)
+    Nearest,  // its own pixel's (a baseline to measure the depth guidance against)
+};
+
 class Shade {
 public:
-    Shade(int width, int height);
+    // SAMPLES > 1 also builds the multisampled programs (renderSamples()).
+    Shade(int width, int height, int samples = 1);
+    // One shading per pixel: the G-buffer point with its own visibility layers.
     void render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
                 const std::vector<scene::RectLight>& lights);
-    const gl::Texture& beauty() const { return beauty_; }          // RGBA32F
+    // After render(): marks the pixels where a sample of SAMPLES differs from the representative
+    // (stencil), then shades and averages every sample of those pixels.
+    void renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
+                       const gl::Texture& visibility_layers,
+                       const std::vector<scene::RectLight>& lights);
+    void setSampleGuide(SampleGuide guide) { guide_ = guide; }
+    // Pixels the last renderSamples() shaded per sample (waits for the GPU).
+    double samplePixels() const;
+    const gl::Texture& beauty() const { return beauty_; }          // RGBA32F, a = coverage
     const gl::Texture& visibility() const { return visibility_; }  // R32F
 
 private:
-    int width_, height_;
-    gl::Texture beauty_, visibility_;
+    void uploadLights(const std::vector<scene::RectLight>& lights);
+
+    int width_, height_, samples_;
+    SampleGuide guide_ = SampleGuide::Depth;
+    gl::Texture beauty_, visibility_, stencil_;
     gl::Framebuffer fbo_;
-    gl::Program program_;
+    gl::Program program_, classify_, samples_program_;  // the last two for SAMPLES > 1
+    gl::Query pixels_;                                  // samples passed, SAMPLES > 1
     gl::DynamicBuffer lights_{"lights"};
     Fullscreen fullscreen_;
 };

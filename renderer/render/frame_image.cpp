@@ -44,7 +44,7 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
         r.pixels[i] = beauty[4 * i + 0];
         g.pixels[i] = beauty[4 * i + 1];
         b.pixels[i] = beauty[4 * i + 2];
-        a.pixels[i] = covered ? 1.0f : 0.0f;
+        a.pixels[i] = beauty[4 * i + 3];  // coverage: the share of samples on geometry
         z.pixels[i] = covered ? normal[4 * i + 3] : 0.0f;
         px.pixels[i] = position[4 * i + 0];
         py.pixels[i] = position[4 * i + 1];

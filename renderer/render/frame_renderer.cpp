@@ -16,7 +16,10 @@ FrameRenderer::FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& firs
       first_(first),
       gpu_(first),
       gbuffer_(width_, height_),
-      shade_(width_, height_) {
+      sample_gbuffer_(first.image.samples > 1 ? std::make_unique<passes::SampleGBuffer>(
+                                                    width_, height_, first.image.samples)
+                                              : nullptr),
+      shade_(width_, height_, first.image.samples) {
     setParams(params);
     gl::checkErrors("prepare");
 }
@@ -25,6 +28,7 @@ void FrameRenderer::setParams(const Params& params) {
     if (technique_ && params.json() == params_.json()) return;
     params_ = params;
     technique_ = info_.create(params_);
+    technique_->readInputs(first_);
     const int before = lights_;
     environment_ = {};
     if (first_.environment && info_.environment) environment_ = info_.environment(params_, first_);
@@ -47,12 +51,24 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
     FrameContext ctx(s, gpu_, gbuffer_, camera, *targets_, timer, stats);
     ctx.lights = all_lights_;
     ctx.pass("gbuffer", [&] { gbuffer_.render(gpu_, camera); });
+    // Multisampling (section 7): the techniques see only the one-sample G-buffer above and
+    // compute one visibility per pixel; the samples meet them in the shade pass.
+    if (sample_gbuffer_) ctx.pass("gbuffer_msaa", [&] { sample_gbuffer_->render(gpu_, camera); });
     for (int l = 0; l < lights_; ++l) {
         ctx.light = l;
         technique_->render(ctx);
     }
     ctx.light = -1;
     ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_); });
+    if (sample_gbuffer_) {
+        ctx.pass("shade_msaa", [&] {
+            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), all_lights_);
+        });
+        // The pixels shaded per sample: where a sample shows another surface than the pixel.
+        const double pixels = shade_.samplePixels();
+        stats["msaa_pixels"] = pixels;
+        stats["msaa_share"] = pixels / (double(width_) * double(height_));
+    }
     return stats;
 }
 

@@ -1,5 +1,6 @@
-// Renders frames of one scene with one technique on the current GL context: the G-buffer,
-// the technique once per light, the shade pass; and reads the result back as an Image.
+// Renders frames of one scene with one technique on the current GL context: the G-buffer (and
+// with image.samples > 1 the sample G-buffer), the technique once per light, the shade pass;
+// and reads the result back as an Image.
 // Used by the render job and by the GL tests.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include "renderer/output/image.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/sample_gbuffer.h"
 #include "renderer/passes/shade.h"
 #include "renderer/render/frame_context.h"
 #include "renderer/render/pass_timer.h"
@@ -36,6 +38,10 @@ public:
     output::Image readImage() const;
 
     const passes::GpuScene& gpuScene() const { return gpu_; }
+    // Samples per pixel (the scene's image.samples).
+    int samples() const { return sample_gbuffer_ ? sample_gbuffer_->samples() : 1; }
+    // How samples that differ from their pixel's representative find their visibility.
+    void setSampleGuide(passes::SampleGuide guide) { shade_.setSampleGuide(guide); }
     // Lights rendered per frame: the scene's and those made of its environment.
     int lightCount() const { return lights_; }
     const Params& params() const { return params_; }
@@ -50,6 +56,7 @@ private:
     std::vector<scene::RectLight> all_lights_;
     passes::GpuScene gpu_;
     passes::GBuffer gbuffer_;
+    std::unique_ptr<passes::SampleGBuffer> sample_gbuffer_;  // image.samples > 1 only
     passes::Shade shade_;
     std::unique_ptr<techniques::Technique> technique_;
     std::vector<techniques::DiagnosticChannel> diagnostics_;

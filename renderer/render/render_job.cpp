@@ -221,6 +221,7 @@ int runRenderJob(const RenderRequest& req) {
                                 {"penumbra/params", renderer.params().json().dump()},
                                 {"penumbra/scene", req.scene.string()},
                                 {"penumbra/frame", std::to_string(plan.frame)},
+                                {"penumbra/samples", std::to_string(renderer.samples())},
                                 {"penumbra/backend", glinfo.api},
                                 {"penumbra/gl_vendor", glinfo.vendor},
                                 {"penumbra/gl_renderer", glinfo.renderer},
@@ -234,6 +235,7 @@ int runRenderJob(const RenderRequest& req) {
             report.backend = backend;
             report.width = width;
             report.height = height;
+            report.samples = renderer.samples();
             report.warmup = req.warmup;
             report.stats = stats;
             report.stats["triangles"] = renderer.gpuScene().triangleCount();

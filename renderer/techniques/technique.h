@@ -24,6 +24,9 @@ struct DiagnosticChannel {
 class Technique {
 public:
     virtual ~Technique() = default;
+    // Reads the files its parameters name (relative to SCENE's file), once before prepare().
+    // Throws InputError naming the parameter.
+    virtual void readInputs(const scene::Scene& scene) { (void)scene; }
     // Per-scene resources (maps, programs), once before the first frame.
     virtual void prepare(const gl::ContextInfo& gl, const passes::GpuScene& scene) = 0;
     // Renders visibility (and diagnostics) of ctx.light into ctx.bindOutput()'s targets.

@@ -45,6 +45,25 @@ assert names[0] == "gbuffer" and "shade" in names, names
 assert "shadow_maps[0]@0" in names and "shadow_test[0]@1" in names, names
 PY
 
+# Multisampling: its passes in the timing JSON, the sample count there and in the EXR header.
+for n in 2 4 8; do
+    "$PENUMBRA" render "$scene" -f 2 -D image.samples=$n -o "ms$n.exr" --quiet ||
+        fail "render with image.samples=$n"
+done
+python3 - ms4.json rep.json <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+assert t["resolution"] == {"width": 64, "height": 48, "samples": 4}, t["resolution"]
+names = [p["name"] for p in t["passes"]]
+assert names[:2] == ["gbuffer", "gbuffer_msaa"] and names.index("shade") + 1 == names.index("shade_msaa"), names
+assert 0 < t["stats"]["msaa_pixels"] < 64 * 48 and t["stats"]["msaa_share"] < 0.5, t["stats"]
+one = json.load(open(sys.argv[2]))
+assert one["resolution"]["samples"] == 1 and "shade_msaa" not in [p["name"] for p in one["passes"]]
+PY
+if command -v oiiotool >/dev/null; then
+    oiiotool --info -v ms8.exr | grep -q 'penumbra/samples: "8"' || fail "samples attribute missing"
+fi
+
 # --skip-existing renders only what is missing.
 rm seq/a.02.exr
 before=$(stat -c %Y seq/a.01.exr)

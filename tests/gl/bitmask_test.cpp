@@ -1,13 +1,17 @@
 // `bitmask` (Schwarz & Stamminger) on small scenes: accuracy against `reference` N = 32 on the
-// default scene, classification without back-projection, budgets and their statistics, the
-// acceleration structures and the area-accumulation alternative.
+// default scene, classification without back-projection, budgets and their statistics, budget
+// maps (procedural and from an image), the acceleration structures and the area-accumulation
+// alternative.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
+
+#include <OpenImageIO/imageio.h>
 
 #include "gl_test_env.h"
 #include "renderer/core/error.h"
@@ -297,4 +301,66 @@ TEST(BitmaskGL, GrowingQueriesAvoidsOverPrecisionSeams) {
     // neighbours choosing different levels without smoothing). The overall error is not lower
     // (0.218 against 0.209): the extra pixels get the coarse micropatches' overestimate.
     EXPECT_LT(step_grown, step_exact);
+}
+
+TEST(BitmaskGL, BudgetMapImage) {
+    // tests/data/gl/budget_halves.png (64 x 8): 0 on its left half, 1 on its right, stretched
+    // bilinearly over the 192 pixels: b_mo = budget_edge on the left, budget on the right, and
+    // a ramp over the 3 pixels around the middle where the two map texels blend.
+    auto r = renderScene("adaptive_default.json",
+                         {{"technique", bitmask(R"(, "budget": 12, "budget_edge": 5,
+                                                   "budget_map": "budget_halves.png")")}});
+    const auto& b = channel(r, "bitmask.budget");
+    const int w = 192, h = 144;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float v = b[size_t(y) * w + size_t(x)];
+            if (x < w / 2 - 2) {
+                ASSERT_EQ(v, 5.0f) << x << ", " << y;
+            }
+            if (x >= w / 2 + 2) {
+                ASSERT_EQ(v, 12.0f) << x << ", " << y;
+            }
+            if (x > 0) {
+                ASSERT_GE(v, b[size_t(y) * w + size_t(x) - 1]);  // no step back
+            }
+        }
+    // With the falloff too the map scales the falloff's budget: the centre of the right half
+    // keeps nearly `budget`, the right corners fall to budget_edge, the left half stays there.
+    auto both = renderScene("adaptive_default.json",
+                            {{"technique", bitmask(R"(, "budget": 12, "budget_edge": 5,
+                                                      "budget_falloff": true,
+                                                      "budget_map": "budget_halves.png")")}});
+    const auto& bb = channel(both, "bitmask.budget");
+    EXPECT_EQ(bb[size_t(h / 2) * w + w / 2 + 4], 12.0f);
+    EXPECT_EQ(bb[size_t(h - 1) * w + w - 1], 5.0f);
+    EXPECT_EQ(bb[size_t(h / 2) * w + 10], 5.0f);
+    // The image's top row is the top of the screen: an EXR (absolute path) bright on top.
+    const char* tmp = std::getenv("PENUMBRA_TEST_TMP");
+    const std::string top = std::string(tmp ? tmp : "/tmp") + "/budget_top.exr";
+    {
+        std::vector<float> pixels(8 * 64, 0.0f);
+        std::fill(pixels.begin(), pixels.begin() + 8 * 32, 1.0f);  // rows 0-31: the top half
+        auto out = OIIO::ImageOutput::create(top);
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open(top, OIIO::ImageSpec(8, 64, 1, OIIO::TypeDesc::HALF)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+        out->close();
+    }
+    auto vertical = renderScene("adaptive_default.json",
+                                {{"technique", bitmask(R"(, "budget": 12, "budget_edge": 5,
+                                                          "budget_map": ")" +
+                                                       top + "\"")}});
+    const auto& bv = channel(vertical, "bitmask.budget");
+    EXPECT_EQ(bv[size_t(10) * w + w / 2], 12.0f);
+    EXPECT_EQ(bv[size_t(h - 10) * w + w / 2], 5.0f);
+    // A missing map is an input error naming the key.
+    try {
+        renderScene("adaptive_default.json",
+                    {{"technique", bitmask(R"(, "budget_map": "missing.png")")}});
+        FAIL() << "expected an InputError";
+    } catch (const penumbra::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("technique.budget_map: "), std::string::npos)
+            << e.what();
+    }
 }

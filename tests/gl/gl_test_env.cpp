@@ -6,7 +6,6 @@
 
 #include "renderer/core/light_geometry.h"
 #include "renderer/gl/debug.h"
-#include "renderer/render/frame_renderer.h"
 #include "renderer/techniques/technique.h"
 
 // Under AddressSanitizer, leak checking is off for the GL tests: Mesa's drivers keep
@@ -33,8 +32,10 @@ const gl::ContextInfo& glInfo() {
     return context()->info();
 }
 
-output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
-                          int frame, nlohmann::json* stats) {
+namespace {
+output::Image render(const std::string& name, const std::vector<scene::Override>& overrides,
+                     int frame, nlohmann::json* stats,
+                     const std::function<void(render::FrameRenderer&)>& configure) {
     const gl::ContextInfo& info = glInfo();
     auto source = scene::SceneSource::load(
         std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
@@ -43,6 +44,7 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
     if (!technique) throw std::runtime_error("unknown technique in " + name);
     Params params = resolveParams(technique->params, s.technique, name + ": technique");
     render::FrameRenderer renderer(info, s, *technique, params);
+    if (configure) configure(renderer);
     render::PassTimer timer(info.software);
     nlohmann::json technique_stats = renderer.render(s, timer);
     timer.finishFrame();
@@ -50,6 +52,18 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
     output::Image image = renderer.readImage();
     gl::checkErrors(name);  // no GL error after any render
     return image;
+}
+}  // namespace
+
+output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
+                          int frame, nlohmann::json* stats) {
+    return render(name, overrides, frame, stats, nullptr);
+}
+
+output::Image renderSceneWith(const std::string& name,
+                              const std::vector<scene::Override>& overrides,
+                              const std::function<void(render::FrameRenderer&)>& configure) {
+    return render(name, overrides, 0, nullptr, configure);
 }
 
 double closedFormShadowMae(const output::Image& img, double light_half, long min_pixels) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "renderer/gl/context.h"
 #include "renderer/output/image.h"
+#include "renderer/render/frame_renderer.h"
 #include "renderer/scene/scene_source.h"
 
 namespace penumbra::testing {
@@ -23,6 +25,10 @@ const gl::ContextInfo& glInfo();
 // when given.
 output::Image renderScene(const std::string& name, const std::vector<scene::Override>& overrides,
                           int frame = 0, nlohmann::json* stats = nullptr);
+// As renderScene (frame 0), with CONFIGURE applied to the frame renderer before it renders.
+output::Image renderSceneWith(const std::string& name,
+                              const std::vector<scene::Override>& overrides,
+                              const std::function<void(render::FrameRenderer&)>& configure);
 
 // Shadow-region MAE (Atty et al. 5.2.1) of IMG's visibility against the closed form of
 // closed_form.json (a 0.8 m square occluder at (0.2, 1.5, 0.1) parallel to a square light of half

@@ -5,20 +5,29 @@
 #include "techniques/bitmask/search.glsl"
 
 uniform int u_refine_steps;
-uniform int u_budget;       // b_mo at the centre (0: unlimited)
-uniform int u_budget_edge;  // b_mo at the corners when u_budget_falloff = 1
+uniform int u_budget;         // b_mo at the centre (0: unlimited)
+uniform int u_budget_edge;    // b_mo at the corners with the falloff, where the map is 0
 uniform int u_budget_falloff;
-uniform int u_grow_query;   // 1: grow query areas to the budget level's texels
+uniform int u_budget_map_on;  // 1: u_budget_map moves b_mo toward u_budget_edge
+uniform int u_grow_query;     // 1: grow query areas to the budget level's texels
+layout(binding = 12) uniform sampler2D u_budget_map;  // v in [0, 1], stretched over the image
 
 layout(location = 0) out vec4 o_area;  // level-0 texels (x0, y0, x1, y1)
 layout(location = 1) out vec4 o_loq;   // (level or -1, class, budget, 0)
 
-// b_mo at PIX: uniform, or falling off from the centre to the corners.
+// b_mo at PIX (a pixel centre): uniform, or falling off from the centre to the corners, and
+// with a budget map moved toward u_budget_edge where the map is below 1.
 int budgetAt(vec2 pix) {
-    if (u_budget_falloff == 0 || u_budget <= 0) return u_budget;
+    if (u_budget <= 0 || (u_budget_falloff == 0 && u_budget_map_on == 0)) return u_budget;
     vec2 size = vec2(textureSize(u_position, 0));
-    float r = length((pix - 0.5 * size) / (0.5 * size)) / sqrt(2.0);
-    return int(round(mix(float(u_budget), float(u_budget_edge), smoothstep(0.0, 1.0, r))));
+    float budget = float(u_budget);
+    if (u_budget_falloff == 1) {
+        float r = length((pix - 0.5 * size) / (0.5 * size)) / sqrt(2.0);
+        budget = mix(float(u_budget), float(u_budget_edge), smoothstep(0.0, 1.0, r));
+    }
+    if (u_budget_map_on == 1)
+        budget = mix(float(u_budget_edge), budget, texture(u_budget_map, pix / size).r);
+    return int(round(budget));
 }
 
 void main() {

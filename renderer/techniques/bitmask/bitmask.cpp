@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
+#include "renderer/techniques/bitmask/budget_map.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/bitmask/loq_targets.h"
 #include "renderer/techniques/bitmask/mask_textures.h"
@@ -46,7 +48,12 @@ constexpr std::array kBitmaskParams = {
              "unlimited, else >= 2); blending also back-projects the finer floor level"),
     boolParam("budget_falloff", false,
               "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners"),
-    intParam("budget_edge", 5, 2, 256, "b_mo at the image corners when budget_falloff is on"),
+    intParam("budget_edge", 5, 2, 256,
+             "b_mo at the image corners with budget_falloff, where budget_map is 0"),
+    stringParam("budget_map", "",
+                "budget map image (.png or .exr, relative to the scene file): its first channel "
+                "v in [0, 1], stretched over the image, sets b_mo = budget_edge + v (budget - "
+                "budget_edge)"),
     boolParam("smooth", true,
               "bilateral-filter the fractional level and blend floor/ceiling levels (4.2)"),
     intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels"),
@@ -86,6 +93,7 @@ public:
           budget_(p.getInt("budget")),
           falloff_(p.getBool("budget_falloff")),
           budget_edge_(p.getInt("budget_edge")),
+          budget_map_file_(p.getString("budget_map")),
           smooth_(p.getBool("smooth")),
           radius_(p.getInt("smooth_radius")),
           depth_tolerance_(static_cast<float>(p.getFloat("depth_tolerance"))),
@@ -111,6 +119,11 @@ public:
         if (budget_ == 0) smooth_ = false;
     }
 
+    void readInputs(const scene::Scene& scene) override {
+        if (!budget_map_file_.empty())
+            budget_map_ = bitmask::readBudgetMap(scene.path, budget_map_file_);
+    }
+
     void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override {
         std::vector<std::uint8_t> receives;
         for (const auto& o : scene.objects()) {
@@ -129,6 +142,7 @@ public:
             if (microquads_) edges_ = bitmask::edgeTexture(points);
         }
         if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
+        if (budget_map_) budget_texture_ = bitmask::uploadBudgetMap(*budget_map_);
         const gl::Defines defines = {{"ACCEL", std::to_string(static_cast<int>(accel_))},
                                      {"BITMASK", use_bitmask_ ? "1" : "0"},
                                      {"GAP_FILL", gap_fill_ ? "1" : "0"},
@@ -213,6 +227,8 @@ private:
             gl::setUniform(p, "u_budget", budget_);
             gl::setUniform(p, "u_budget_edge", budget_edge_);
             gl::setUniform(p, "u_budget_falloff", falloff_ ? 1 : 0);
+            gl::setUniform(p, "u_budget_map_on", budget_texture_ ? 1 : 0);
+            if (budget_texture_) glBindTextureUnit(12, budget_texture_.id());
             gl::setUniform(p, "u_grow_query", grow_query_ ? 1 : 0);
             fullscreen_.draw();
             glUseProgram(0);
@@ -302,6 +318,8 @@ private:
     int budget_;
     bool falloff_;
     int budget_edge_;
+    std::string budget_map_file_;
+    std::optional<bitmask::BudgetMap> budget_map_;  // read by readInputs()
     bool smooth_;
     int radius_;
     float depth_tolerance_;
@@ -311,7 +329,7 @@ private:
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<bitmask::LoqTargets> targets_;
     std::unique_ptr<bitmask::MicroRects> rects_;
-    gl::Texture receives_, masks_, edges_;
+    gl::Texture receives_, masks_, edges_, budget_texture_;
     gl::Program classify_, smooth_program_, visibility_;
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;
