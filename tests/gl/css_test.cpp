@@ -165,3 +165,50 @@ TEST(CssGL, DiagnosticsDescribeTheKernel) {
     }
     EXPECT_GT(shadowed, 500);
 }
+
+TEST(CssGL, LightAcrossTheReceiverPlaneKeepsItsPartAbove) {
+    // A light low over the floor, tilted so that its rectangle crosses the floor's plane
+    // (y = 0) diagonally: where no blocker is found, css's visibility is the share of the
+    // light above the receiver's tangent plane (visibility.frag aboveHorizon, in closed form).
+    // Expected: that share from 2000 x 2000 midpoint samples of the rectangle (error about
+    // 1e-3 where the line crosses the samples).
+    penumbra::scene::RectLight light;
+    light.position = {2.5f, 0.15f, 0.2f};
+    light.target = {0.0f, 0.0f, 0.0f};
+    light.up = {0.4f, 1.0f, 0.5f};
+    light.size = {1.4f, 1.0f};
+    const glm::vec3 c = light.position, r = light.right(), u = light.upAxis();
+    long above = 0;
+    const int n = 2000;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const float x = (static_cast<float>(i) + 0.5f) / n - 0.5f;
+            const float y = (static_cast<float>(j) + 0.5f) / n - 0.5f;
+            above += (c + x * light.size.x * r + y * light.size.y * u).y > 0.0f;
+        }
+    const double share = static_cast<double>(above) / (double(n) * n);
+    ASSERT_GT(share, 0.2);
+    ASSERT_LT(share, 0.8);
+    auto img = renderScene("closed_form.json", {{"technique", css()},
+                                                {"lights.0.position", "[2.5, 0.15, 0.2]"},
+                                                {"lights.0.up", "[0.4, 1.0, 0.5]"},
+                                                {"lights.0.size", "[1.4, 1.0]"}});
+    const auto& v = channel(img, "visibility");
+    const auto& z = channel(img, "css.z_avg");
+    const auto& id = channel(img, "id");
+    const auto& px = channel(img, "P.X");
+    long checked = 0;
+    double worst = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        // Floor in front of the light (x < 2.2) with no blocker found (z_avg 0).
+        if (id[i] != 0.0f || px[i] > 2.2f || z[i] != 0.0f) continue;
+        worst = std::max(worst, std::fabs(v[i] - share));
+        ++checked;
+    }
+    std::printf(
+        "css, light across the floor's plane: share above %.4f, worst |V - share| %.4f "
+        "over %ld pixels\n",
+        share, worst, checked);
+    EXPECT_GT(checked, 5000);
+    EXPECT_LT(worst, 3e-3);
+}

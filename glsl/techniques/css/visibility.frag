@@ -144,22 +144,31 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
 
 // The fraction of the light above the tangent plane of receiver P (normal N): the part below
 // is hidden by the receiver's own surface, as every light-sample shadow map sees it for a
-// closed object. The plane cuts the rectangle along a line; the covered length of each of 16
-// strips across the light is exact, the sum over strips a midpoint rule.
+// closed object. With the light as the unit square (x along right, y along up) the height
+// above the plane is h0 + hx x + hy y; exact in closed form (horizonArea).
+float horizonRamp(float t) {  // the integral of clamp(t, 0, 1) from 0 to t
+    float u = clamp(t, 0.0, 1.0);
+    return 0.5 * u * u + max(t - 1.0, 0.0);
+}
+float horizonArea(float h0, float hx, float hy) {
+    // Integrate along the axis of the larger slope: the covered length across it is
+    // clamp(a + b y, 0, 1) with |b| <= 1, whose integral over y in [0, 1] is
+    // (R(a + b) - R(a)) / b, R = horizonRamp.
+    if (abs(hx) < abs(hy)) {
+        float t = hx;
+        hx = hy;
+        hy = t;
+    }
+    if (abs(hx) < 1e-12) return step(0.0, h0);
+    float a = hx > 0.0 ? 1.0 + h0 / hx : -h0 / hx, b = (hx > 0.0 ? hy : -hy) / hx;
+    if (abs(b) < 1e-3) return clamp(a + 0.5 * b, 0.0, 1.0);  // (R's difference cancels)
+    return clamp((horizonRamp(a + b) - horizonRamp(a)) / b, 0.0, 1.0);
+}
 float aboveHorizon(vec3 p, vec3 n) {
     vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right + u_light_size.y * u_light_up);
     float h0 = dot(corner - p, n);
     float hx = u_light_size.x * dot(u_light_right, n), hy = u_light_size.y * dot(u_light_up, n);
-    if (h0 >= 0.0 && h0 + hx >= 0.0 && h0 + hy >= 0.0 && h0 + hx + hy >= 0.0) return 1.0;
-    float sum = 0.0;
-    for (int i = 0; i < 16; ++i) {
-        float h = h0 + hy * (float(i) + 0.5) / 16.0;  // height at the strip's start (x = 0)
-        // Length of {x in [0, 1]: h + hx x > 0}.
-        float len = abs(hx) < 1e-9 ? step(0.0, h)
-                                   : clamp(hx > 0.0 ? 1.0 + h / hx : -h / hx, 0.0, 1.0);
-        sum += len;
-    }
-    return sum / 16.0;
+    return horizonArea(h0, hx, hy);
 }
 
 void main() {
