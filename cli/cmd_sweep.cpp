@@ -22,7 +22,7 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
   --vary KEY=A:B:N[:log]   N values from A to B, evenly or geometrically spaced
   -t, --technique NAME     the technique under test (default: the scene's)
   -D, --set KEY=VALUE      a fixed override for every run and reference
-  --reference-technique T  the ground truth (default: reference)
+  --reference-technique T  the ground truth (default: exact, ray-traced)
   --reference-set K=V      an override for the reference only (default technique.samples=32)
   -f, --frame N            the frame to render (default 0)
   --size WxH               image size

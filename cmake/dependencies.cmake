@@ -6,6 +6,7 @@ find_package(OpenEXR REQUIRED)
 find_package(Imath REQUIRED)
 find_package(draco REQUIRED)
 find_package(OpenImageIO REQUIRED)
+find_package(embree 3 REQUIRED)
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 
@@ -25,7 +26,7 @@ endif()
 add_library(penumbra_deps INTERFACE)
 target_link_libraries(penumbra_deps INTERFACE
     nlohmann_json::nlohmann_json glm::glm OpenEXR::OpenEXR Imath::Imath
-    OpenImageIO::OpenImageIO PkgConfig::EGL PkgConfig::STB ${CMAKE_DL_LIBS})
+    OpenImageIO::OpenImageIO embree PkgConfig::EGL PkgConfig::STB ${CMAKE_DL_LIBS})
 target_include_directories(penumbra_deps INTERFACE ${draco_INCLUDE_DIRS} /usr/include/stb)
 target_link_libraries(penumbra_deps INTERFACE draco::draco)
 target_compile_definitions(penumbra_deps INTERFACE GLM_FORCE_RADIANS)

@@ -1,10 +1,13 @@
 // Shading of one G-buffer point by every light (include-only, shared by shade.frag and
-// shade_samples.frag): beauty = albedo/pi * sum_i L_i E_i V_i with E_i the exact unshadowed
-// irradiance of rect light i, and the irradiance-weighted visibility sum(E_i V_i) / sum(E_i).
+// shade_samples.frag): beauty = albedo/pi * sum_i L_i E_i B_i with E_i the exact unshadowed
+// irradiance of rect light i (clipped to the horizon) and B_i the visible share of what the
+// light contributes (beautyVisibility); and the irradiance-weighted visibility
+// sum(E_i V_i) / sum(E_i) of the area fractions V_i.
 #ifndef PENUMBRA_SHADING_GLSL
 #define PENUMBRA_SHADING_GLSL
 
 #include "common/bindings.glsl"
+#include "common/light_horizon.glsl"
 #include "common/light_irradiance.glsl"
 
 struct GpuLight {
@@ -14,10 +17,28 @@ struct GpuLight {
 };
 layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { GpuLight u_lights[]; };
 
-layout(binding = 3) uniform sampler2DArray u_visibility;  // one layer per light
+// One layer per light: r = V, the visible area fraction (the papers' quantity); g, b = the sums
+// of w_k c_k lit_k and w_k c_k over the light's samples k (c_k: the sample's unshadowed
+// contribution cos cos / r^2) and a > 0, written by techniques that sample the light (a = 0
+// from the others).
+layout(binding = 3) uniform sampler2DArray u_visibility;
 uniform int u_light_count;
 
 const float kPi = 3.14159265358979;
+
+// The share of light L's contribution at POS (normal N) that reaches it, from the technique's
+// layer VIS. Where the technique sampled the light, the contribution-weighted share of its
+// samples; where none of them lies above the horizon, nothing says the part above is hidden
+// (E has left out the rest): 1. Otherwise V counts the light's part below the tangent plane
+// as hidden (the receiver's own surface hides it from every light sample) while E already
+// leaves it out: V is divided by the share of the light above the plane, so that part is not
+// removed twice.
+float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n) {
+    if (vis.a > 0.0) return vis.b > 0.0 ? clamp(vis.g / vis.b, 0.0, 1.0) : 1.0;
+    float share = lightShareAboveHorizon(l.corners[0].xyz, l.corners[1].xyz - l.corners[0].xyz,
+                                         l.corners[3].xyz - l.corners[0].xyz, pos, n);
+    return share > 0.0 ? clamp(vis.r / share, 0.0, 1.0) : 0.0;
+}
 
 // Radiance leaving POS (unit normal N, linear ALBEDO) lit by every light, with the visibility
 // layers of pixel VIS_PIX (fully visible where VIS_PIX.x < 0); VISIBILITY gets the
@@ -29,8 +50,10 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, ivec2 vis_pix, out float visibili
         GpuLight l = u_lights[i];
         vec3 c[4] = vec3[4](l.corners[0].xyz, l.corners[1].xyz, l.corners[2].xyz, l.corners[3].xyz);
         float e = rectLightIrradiance(c, l.forward.xyz, pos, n);
-        float v = vis_pix.x < 0 ? 1.0 : texelFetch(u_visibility, ivec3(vis_pix, i), 0).r;
-        radiance += albedo / kPi * l.radiance.rgb * e * v;
+        vec4 layer = vis_pix.x < 0 ? vec4(1.0, 1.0, 1.0, 1.0)
+                                   : texelFetch(u_visibility, ivec3(vis_pix, i), 0);
+        float v = layer.r;
+        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, n);
         num += l.radiance.w * e * v;
         den += l.radiance.w * e;
         plain += v;

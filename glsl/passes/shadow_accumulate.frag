@@ -1,6 +1,7 @@
 #version 450 core
 // Adds sum_k weight_k * lit_k over a batch of light-sample shadow maps to the bound target
-// (additive blending). Normal-offset and constant bias; PCF over a PCF x PCF texel kernel.
+// (additive blending), and in g and b sum_k weight_k c_k lit_k and sum_k weight_k c_k with c_k
+// the sample's unshadowed contribution cos cos / r^2, a > 0 (the shade pass's beauty weighting). Normal-offset and constant bias; PCF over a PCF x PCF texel kernel.
 // Every view of a batch shares the light's frame, so the receiver is projected once into that
 // frame and each view costs a few scalar operations and one depth-compare fetch.
 #include "common/sample_view.glsl"
@@ -62,9 +63,22 @@ void main() {
     float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
     vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_base].params.y * dist);
     vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
-    float sum = 0.0;
+    // The receiver itself (no offset) and its normal in the light's frame, for c_k.
+    vec3 q0 = vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up),
+                   dot(pos.xyz, u_light_forward));
+    vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
+    float sum = 0.0, weighted = 0.0, weights = 0.0;
     for (int i = 0; i < u_count; ++i) {
-        sum += u_lookups[3 * (u_view_base + i) + 2].y * lookup(i, q);
+        int k = u_view_base + i;
+        float w = u_lookups[3 * k + 2].y;
+        float lit = lookup(i, q);
+        // d: receiver to sample; cos_r |d| = n.d, cos_l |d| = the receiver's depth beyond it.
+        vec3 d = u_lookups[3 * k].xyz - q0;
+        float d2 = dot(d, d);
+        float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
+        sum += w * lit;
+        weighted += w * c * lit;
+        weights += w * c;
     }
-    o_visibility = vec4(sum, 0.0, 0.0, 0.0);
+    o_visibility = vec4(sum, weighted, weights, 1.0);  // a: the light was sampled
 }

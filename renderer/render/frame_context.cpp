@@ -9,7 +9,7 @@ namespace penumbra::render {
 OutputTargets::OutputTargets(int width, int height, int lights, int diagnostics)
     : width_(width),
       height_(height),
-      visibility_(gl::createTexture2DArray(GL_R32F, width, height, std::max(lights, 1),
+      visibility_(gl::createTexture2DArray(GL_RGBA32F, width, height, std::max(lights, 1),
                                            "visibility per light")),
       fbo_(gl::createFramebuffer("technique output")) {
     for (int i = 0; i < diagnostics; ++i)
@@ -29,6 +29,16 @@ void OutputTargets::bind(int light) {
         throw RuntimeError("technique output: framebuffer incomplete");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
+}
+
+void OutputTargets::uploadVisibility(int light, std::span<const float> rgba) {
+    if (rgba.size() != size_t(width_) * size_t(height_) * 4)
+        throw RuntimeError("technique output: visibility upload of the wrong size");
+    // Rows arrive top first, as readback gives them; GL's rows run bottom-up.
+    const size_t row = size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        glTextureSubImage3D(visibility_.id(), 0, 0, height_ - 1 - y, light, width_, 1, 1, GL_RGBA,
+                            GL_FLOAT, rgba.data() + size_t(y) * row);
 }
 
 void FrameContext::pass(const std::string& name, const std::function<void()>& fn) {

@@ -18,14 +18,19 @@
 
 namespace penumbra::render {
 
-// Per-light output layers shared by the frame: visibility (R32F array, one layer per light)
-// and one R32F array per technique diagnostic channel.
+// Per-light output layers shared by the frame: visibility (RGBA32F array, one layer per light:
+// r = the visible area fraction; g, b, a = the contribution-weighted sums and flag that
+// glsl/passes/shading.glsl reads, 0 where a technique has none) and one R32F array per diagnostic
+// channel.
 class OutputTargets {
 public:
     OutputTargets(int width, int height, int lights, int diagnostics);
     // Binds a framebuffer with colour 0 = visibility layer LIGHT, colour 1+i = diagnostic i's
     // layer LIGHT, viewport = image size.
     void bind(int light);
+    // Replaces visibility layer LIGHT with RGBA (width x height x 4 floats, top row first): for
+    // techniques that compute visibility on the CPU.
+    void uploadVisibility(int light, std::span<const float> rgba);
     const gl::Texture& visibility() const { return visibility_; }
     const std::vector<gl::Texture>& diagnostics() const { return diagnostics_; }
 
@@ -66,6 +71,12 @@ public:
     void pass(const std::string& name, const std::function<void()>& fn);
     // Binds this light's output layers (see OutputTargets::bind).
     void bindOutput() { targets_.bind(light); }
+    // Replaces this light's visibility layer (see OutputTargets::uploadVisibility).
+    void uploadVisibility(std::span<const float> rgba) { targets_.uploadVisibility(light, rgba); }
+    // Shows STATUS (e.g. a CPU pass's share done and ETA) on the progress line, if any.
+    void progress(const std::string& status) {
+        if (timer_.on_begin) timer_.on_begin(status);
+    }
 
 private:
     OutputTargets& targets_;

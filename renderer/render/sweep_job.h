@@ -19,7 +19,7 @@ struct SweepRequest {
     std::vector<scene::Override> overrides;  // -D and --size, before the varied values
     std::optional<std::string> technique;    // -t
     std::vector<VaryAxis> axes;              // --vary
-    std::string reference_technique = "reference";
+    std::string reference_technique = "exact";
     std::vector<scene::Override> reference_sets;  // --reference-set, after the defaults
     int frame = 0;
     std::filesystem::path out;  // -o DIR

@@ -7,9 +7,9 @@
 namespace penumbra::techniques {
 
 std::span<const TechniqueInfo> allTechniques() {
-    static const std::array<TechniqueInfo, 6> all = {kHardTechnique,     kReferenceTechnique,
-                                                     kAdaptiveTechnique, kSsmTechnique,
-                                                     kBitmaskTechnique,  kCssTechnique};
+    static const std::array<TechniqueInfo, 7> all = {
+        kHardTechnique, kReferenceTechnique, kExactTechnique, kAdaptiveTechnique,
+        kSsmTechnique,  kBitmaskTechnique,   kCssTechnique};
     return all;
 }
 

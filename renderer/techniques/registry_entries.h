@@ -6,6 +6,7 @@
 namespace penumbra::techniques {
 extern const TechniqueInfo kHardTechnique;
 extern const TechniqueInfo kReferenceTechnique;
+extern const TechniqueInfo kExactTechnique;
 extern const TechniqueInfo kSsmTechnique;
 extern const TechniqueInfo kAdaptiveTechnique;
 extern const TechniqueInfo kBitmaskTechnique;

@@ -66,6 +66,16 @@ output::Image renderSceneWith(const std::string& name,
     return render(name, overrides, 0, nullptr, configure);
 }
 
+double pixelIrradiance(const scene::RectLight& light, const output::Image& img, size_t i) {
+    const auto c = light.corners();
+    const std::array<glm::dvec3, 4> corners = {glm::dvec3(c[0]), glm::dvec3(c[1]), glm::dvec3(c[2]),
+                                               glm::dvec3(c[3])};
+    const glm::dvec3 p(channel(img, "P.X")[i], channel(img, "P.Y")[i], channel(img, "P.Z")[i]);
+    const glm::dvec3 n = glm::normalize(
+        glm::dvec3(channel(img, "N.X")[i], channel(img, "N.Y")[i], channel(img, "N.Z")[i]));
+    return rectLightIrradiance(corners, glm::dvec3(light.forward()), p, n);
+}
+
 double closedFormShadowMae(const output::Image& img, double light_half, long min_pixels) {
     const auto& vis = channel(img, "visibility");
     const auto& id = channel(img, "id");

@@ -46,6 +46,9 @@ double floorShadowMae(const output::Image& ref, const output::Image& test, long 
 double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& truth,
                        long min_pixels = 500);
 
+// Exact unshadowed irradiance of LIGHT (double precision) at pixel I of IMG, from its P and N.
+double pixelIrradiance(const scene::RectLight& light, const output::Image& img, size_t i);
+
 // The largest |a[i] - b[i]| of two equally long channels.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
 

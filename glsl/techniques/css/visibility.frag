@@ -23,6 +23,7 @@
 #ifndef SEARCH_STEPS
 #define SEARCH_STEPS 0
 #endif
+#include "common/light_horizon.glsl"
 #include "techniques/css/basis_layout.glsl"
 
 in vec2 v_uv;
@@ -144,31 +145,11 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
 
 // The fraction of the light above the tangent plane of receiver P (normal N): the part below
 // is hidden by the receiver's own surface, as every light-sample shadow map sees it for a
-// closed object. With the light as the unit square (x along right, y along up) the height
-// above the plane is h0 + hx x + hy y; exact in closed form (horizonArea).
-float horizonRamp(float t) {  // the integral of clamp(t, 0, 1) from 0 to t
-    float u = clamp(t, 0.0, 1.0);
-    return 0.5 * u * u + max(t - 1.0, 0.0);
-}
-float horizonArea(float h0, float hx, float hy) {
-    // Integrate along the axis of the larger slope: the covered length across it is
-    // clamp(a + b y, 0, 1) with |b| <= 1, whose integral over y in [0, 1] is
-    // (R(a + b) - R(a)) / b, R = horizonRamp.
-    if (abs(hx) < abs(hy)) {
-        float t = hx;
-        hx = hy;
-        hy = t;
-    }
-    if (abs(hx) < 1e-12) return step(0.0, h0);
-    float a = hx > 0.0 ? 1.0 + h0 / hx : -h0 / hx, b = (hx > 0.0 ? hy : -hy) / hx;
-    if (abs(b) < 1e-3) return clamp(a + 0.5 * b, 0.0, 1.0);  // (R's difference cancels)
-    return clamp((horizonRamp(a + b) - horizonRamp(a)) / b, 0.0, 1.0);
-}
+// closed object (common/light_horizon.glsl).
 float aboveHorizon(vec3 p, vec3 n) {
     vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right + u_light_size.y * u_light_up);
-    float h0 = dot(corner - p, n);
-    float hx = u_light_size.x * dot(u_light_right, n), hy = u_light_size.y * dot(u_light_up, n);
-    return horizonArea(h0, hx, hy);
+    return lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
+                                  u_light_size.y * u_light_up, p, n);
 }
 
 void main() {

@@ -1,0 +1,35 @@
+// The share of a rect light's area above a receiver's tangent plane, in closed form
+// (include-only): the part below is hidden by the receiver's own surface for a closed object.
+#ifndef PENUMBRA_LIGHT_HORIZON_GLSL
+#define PENUMBRA_LIGHT_HORIZON_GLSL
+
+// The integral of clamp(t, 0, 1) from 0 to t.
+float horizonRamp(float t) {
+    float u = clamp(t, 0.0, 1.0);
+    return 0.5 * u * u + max(t - 1.0, 0.0);
+}
+
+// With the light as the unit square (x, y in [0, 1]) and the height above the plane
+// h0 + hx x + hy y, the area of the square where the height is >= 0.
+float horizonArea(float h0, float hx, float hy) {
+    // Integrate along the axis of the larger slope: the covered length across it is
+    // clamp(a + b y, 0, 1) with |b| <= 1, whose integral over y in [0, 1] is
+    // (R(a + b) - R(a)) / b, R = horizonRamp.
+    if (abs(hx) < abs(hy)) {
+        float t = hx;
+        hx = hy;
+        hy = t;
+    }
+    if (abs(hx) < 1e-12) return step(0.0, h0);
+    float a = hx > 0.0 ? 1.0 + h0 / hx : -h0 / hx, b = (hx > 0.0 ? hy : -hy) / hx;
+    if (abs(b) < 1e-3) return clamp(a + 0.5 * b, 0.0, 1.0);  // (R's difference cancels)
+    return clamp((horizonRamp(a + b) - horizonRamp(a)) / b, 0.0, 1.0);
+}
+
+// The share of the parallelogram CORNER + x EDGE_X + y EDGE_Y (x, y in [0, 1]) above the
+// plane through P with unit normal N.
+float lightShareAboveHorizon(vec3 corner, vec3 edge_x, vec3 edge_y, vec3 p, vec3 n) {
+    return horizonArea(dot(corner - p, n), dot(edge_x, n), dot(edge_y, n));
+}
+
+#endif  // PENUMBRA_LIGHT_HORIZON_GLSL

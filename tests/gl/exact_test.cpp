@@ -1,0 +1,258 @@
+// `exact` (ray-traced visibility) against closed forms, and beauty against `exact`: the square
+// occluder's closed form, contribution-weighted penumbra beauty against numeric integration, a
+// tilted light over a plane, the default scene's `reference`, and a lone sphere whose light
+// crosses its horizon, for every technique.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "gl_test_env.h"
+#include "renderer/core/light_geometry.h"
+#include "renderer/scene/scene_source.h"
+#include "renderer/techniques/technique.h"
+
+using penumbra::output::Image;
+using penumbra::testing::channel;
+using penumbra::testing::renderScene;
+
+namespace {
+
+penumbra::scene::RectLight firstLight(const std::string& name) {
+    return penumbra::scene::SceneSource::load(
+               std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, {})
+        .at(0)
+        .lights.at(0);
+}
+
+glm::dvec3 position(const Image& img, size_t i) {
+    return {channel(img, "P.X")[i], channel(img, "P.Y")[i], channel(img, "P.Z")[i]};
+}
+
+double irradiance(const penumbra::scene::RectLight& light, const Image& img, size_t i) {
+    return penumbra::testing::pixelIrradiance(light, img, i);
+}
+
+}  // namespace
+
+TEST(ExactGL, MatchesClosedFormSquareOccluder) {
+    auto img =
+        renderScene("closed_form.json", {{"technique", R"({"name": "exact", "samples": 32})"}});
+    const double mae = penumbra::testing::closedFormShadowMae(img, 0.5, 1000);
+    std::printf("exact N=32, closed form: shadow-region MAE %.5f\n", mae);
+    // 0.003 (the issue's bound): 32 x 32 jittered strata leave per-pixel noise of about
+    // 1/32^1.5 = 0.0055 at the steepest penumbra and far less elsewhere; no map, no bias.
+    EXPECT_LE(mae, 0.003);
+}
+
+TEST(ExactGL, PenumbraBeautyWeighsWhatIsVisibleByWhatItContributes) {
+    // The square occluder scene again: in the penumbra, beauty / (albedo/pi L E) must be the
+    // share of the light's *contribution* (cos cos / r^2) that is unblocked, not its area share.
+    auto img =
+        renderScene("closed_form.json", {{"technique", R"({"name": "exact", "samples": 32})"}});
+    const auto light = firstLight("closed_form.json");
+    const double lr = light.radiance().r;
+    const auto c = light.corners();
+    const auto& r = channel(img, "R");
+    const auto& vis = channel(img, "visibility");
+    const auto& id = channel(img, "id");
+    double err = 0, area_err = 0, sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < r.size(); ++i) {
+        if (id[i] != 0 || vis[i] > 0.99f || vis[i] < 0.01f) continue;  // floor penumbra
+        const glm::dvec3 p = position(img, i);
+        // Numeric integration over a 128 x 128 grid of the light: the occluder is the square
+        // |x - 0.2|, |z - 0.1| <= 0.4 at y = 1.5, the floor's normal is +y.
+        double all = 0, open = 0;
+        constexpr int kGrid = 128;
+        for (int b = 0; b < kGrid; ++b)
+            for (int a = 0; a < kGrid; ++a) {
+                const glm::dvec3 s = glm::dvec3(c[0]) +
+                                     glm::dvec3(c[1] - c[0]) * ((a + 0.5) / kGrid) +
+                                     glm::dvec3(c[3] - c[0]) * ((b + 0.5) / kGrid);
+                const glm::dvec3 d = s - p;
+                const double d2 = glm::dot(d, d);
+                const double w = d.y * glm::dot(glm::dvec3(light.forward()), -d) / (d2 * d2);
+                const double t = (1.5 - p.y) / d.y;
+                const glm::dvec3 x = p + d * t;
+                const bool blocked = std::fabs(x.x - 0.2) <= 0.4 && std::fabs(x.z - 0.1) <= 0.4;
+                all += w;
+                if (!blocked) open += w;
+            }
+        const double e = irradiance(light, img, i);
+        const double expected = lr / M_PI * e * open / all;  // white floor
+        err += std::fabs(r[i] - expected);
+        area_err += std::fabs(lr / M_PI * e * vis[i] - expected);  // beauty as E x area share
+        sum += expected;
+        ++n;
+    }
+    ASSERT_GT(n, 500);
+    std::printf("penumbra beauty: relative MAE %.5f (E x area share would be %.5f) over %ld px\n",
+                err / sum, area_err / sum, n);
+    // 0.004: the per-pixel jitter noise of 32 x 32 strata (as above) relative to the penumbra's
+    // mean; the area share's error on this scene is measured above it, so the test can fail.
+    EXPECT_LE(err / sum, 0.004);
+    EXPECT_GT(area_err / sum, err / sum);
+}
+
+TEST(ExactGL, UnoccludedPlaneUnderTiltedLightIsTheClosedForm) {
+    auto img = renderScene("tilted_light.json", {});
+    const auto light = firstLight("tilted_light.json");
+    const double lr = light.radiance().r;
+    const auto& r = channel(img, "R");
+    const auto& vis = channel(img, "visibility");
+    const auto& id = channel(img, "id");
+    long n = 0;
+    double worst = 0;
+    for (size_t i = 0; i < r.size(); ++i) {
+        if (id[i] != 0) continue;
+        EXPECT_EQ(vis[i], 1.0f);  // no casters: no ray is blocked
+        const double expected = lr / M_PI * irradiance(light, img, i);
+        if (expected <= 1e-4) continue;
+        const double rel = std::fabs(r[i] - expected) / expected;
+        worst = std::max(worst, rel);
+        // 0.1 % (the issue's bound): float GLSL against double here.
+        EXPECT_LE(rel, 1e-3) << "pixel " << i;
+        ++n;
+    }
+    EXPECT_GT(n, 5000);
+    std::printf("tilted light: %ld pixels, worst relative error %.2e\n", n, worst);
+}
+
+TEST(ExactGL, ReferenceOnTheDefaultFloorAndItsBias) {
+    const std::vector<penumbra::scene::Override> size = {{"image.width", "256"},
+                                                         {"image.height", "192"}};
+    auto with = [&](const char* technique) {
+        auto o = size;
+        o.push_back({"technique", technique});
+        return renderScene("../../../scenes/default.json", o);
+    };
+    const Image exact = with(R"({"name": "exact", "samples": 32})");
+    const Image ref = with(R"({"name": "reference", "samples": 32})");
+    const double mae = penumbra::testing::floorShadowMae(exact, ref);
+    const auto& ve = channel(exact, "visibility");
+    const auto& vr = channel(ref, "visibility");
+    const auto& id = channel(exact, "id");
+    const auto& re = channel(exact, "R");
+    const auto& rr = channel(ref, "R");
+    double floor_bias = 0, object_bias = 0, beauty_e = 0, beauty_r = 0;
+    long floor_n = 0, object_n = 0;
+    for (size_t i = 0; i < ve.size(); ++i) {
+        if (id[i] < 0) continue;
+        beauty_e += re[i], beauty_r += rr[i];
+        if (id[i] == 0 && (ve[i] < 0.999f || vr[i] < 0.999f))
+            floor_bias += vr[i] - ve[i], ++floor_n;
+        if (id[i] > 0) object_bias += vr[i] - ve[i], ++object_n;
+    }
+    std::printf(
+        "reference N=32 - exact N=32, default scene: floor shadow MAE %.5f, mean bias "
+        "%+.5f (floor shadow), %+.5f (objects); beauty mean %+.3f %%\n",
+        mae, floor_bias / floor_n, object_bias / object_n, 100 * (beauty_r - beauty_e) / beauty_e);
+    EXPECT_LE(mae, 0.01);  // the issue's bound: 1024^2 maps, normal offset and depth bias
+    // 0.5 % (the issue's bound): reference's normal offset lights grazing object points a
+    // little; beauty weights samples by their contribution, so those count little.
+    EXPECT_LE(std::fabs(beauty_r - beauty_e) / beauty_e, 0.005);
+}
+
+// Relative mean absolute errors against `exact` over the covered pixels of IMG (of object
+// ONLY_ID, or all): of beauty (R) and of visibility, each over exact's mean.
+struct Errors {
+    double beauty, visibility;
+};
+Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
+    const auto& id = channel(exact, "id");
+    const auto& ve = channel(exact, "visibility");
+    const auto& re = channel(exact, "R");
+    const auto& v = channel(img, "visibility");
+    const auto& r = channel(img, "R");
+    double db = 0, dv = 0, sb = 0, sv = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        if (id[i] < 0 || (only_id > -2 && id[i] != only_id)) continue;
+        db += std::fabs(r[i] - re[i]), sb += re[i];
+        dv += std::fabs(v[i] - ve[i]), sv += ve[i];
+    }
+    return {db / sb, dv / sv};
+}
+
+// css's V carries the closed-form horizon factor, exact where its filtered test is not: V's
+// error shrinks by the share above the horizon at grazing points while beauty's (V / share)
+// does not, and its floor errors lie where E is high. Measured 1.006x (lone sphere) and 1.024x
+// (default scene) of its visibility error; every other technique is strict.
+double cssSlack(std::string_view name) {
+    return name == "css" ? 1.05 : 1.0;
+}
+
+std::string techniqueJson(std::string_view name) {
+    return std::string(R"({"name": ")") + std::string(name) + "\"}";
+}
+
+TEST(ExactGL, LoneSphereBeautyForEveryTechnique) {
+    // A sphere under a light wider than itself: the light crosses the horizon of most of the
+    // sphere's points. The part below is hidden by the sphere itself and left out of E: with
+    // nothing else in the way, beauty on the sphere is albedo/pi L E (horizon-clipped E).
+    const auto light = firstLight("lone_sphere.json");
+    const double lr = light.radiance().r;
+    const Image exact = renderScene("lone_sphere.json", {});
+    const auto& id = channel(exact, "id");
+    const auto& re = channel(exact, "R");
+    double brightest = 0;
+    for (size_t i = 0; i < re.size(); ++i)
+        if (id[i] == 1) brightest = std::max(brightest, double(re[i]));
+    for (const auto& t : penumbra::techniques::allTechniques()) {
+        const Image img = t.name == "exact" ? exact
+                                            : renderScene("lone_sphere.json",
+                                                          {{"technique", techniqueJson(t.name)}});
+        const auto& r = channel(img, "R");
+        double sum = 0, sum_exact = 0, sum_form = 0, worst = 0;
+        long n = 0, off = 0;
+        for (size_t i = 0; i < r.size(); ++i) {
+            if (id[i] != 1) continue;  // the sphere
+            const double form = lr / M_PI * irradiance(light, exact, i);
+            sum += r[i], sum_exact += re[i], sum_form += form;
+            // 2 % of the pixel (the issue's bound) plus 0.05 % of the sphere's brightest pixel:
+            // where the light grazes the underside (beauty under 1 % of the top's), the
+            // 128-gon's facets, tilted up to 1.4 degrees from its smooth normals, block rays
+            // that E's smooth normal counts (exact: up to 5 % of such a dim pixel).
+            const double err = std::fabs(r[i] - form);
+            worst = std::max(worst, err / brightest);
+            off += err > 0.02 * form + 0.0005 * brightest;
+            ++n;
+        }
+        ASSERT_GT(n, 2000) << t.name;
+        const Errors e = errorsAgainst(exact, img, 1);
+        std::printf(
+            "lone sphere, %-9s: mean beauty %+.3f %% against exact, %+.3f %% against "
+            "albedo/pi L E; %ld of %ld pixels over 2 %%, worst %.3f %% of the brightest; "
+            "errors: beauty %.4f, visibility %.4f\n",
+            std::string(t.name).c_str(), 100 * (sum - sum_exact) / sum_exact,
+            100 * (sum - sum_form) / sum_form, off, n, 100 * worst, e.beauty, e.visibility);
+        if (t.name == "ssm" || t.name == "bitmask" || t.name == "css") {
+            // These three shadow the sphere by its own upper half (their visibility is wrong on
+            // this scene: the conformance and ssm-layers issues). The shading adds no error of
+            // its own: beauty's error stays within visibility's (see cssSlack for css).
+            EXPECT_LE(e.beauty, cssSlack(t.name) * e.visibility) << t.name;
+            continue;
+        }
+        EXPECT_LE(std::fabs(sum - sum_exact) / sum_exact, 0.01) << t.name;
+        EXPECT_LE(std::fabs(sum - sum_form) / sum_form, 0.01) << t.name;
+        EXPECT_EQ(off, 0) << t.name;
+    }
+}
+
+TEST(ExactGL, EveryTechniquesBeautyErrorIsNoLargerThanItsVisibilityError) {
+    const std::string scene = "../../../scenes/default.json";
+    std::vector<penumbra::scene::Override> size = {{"image.width", "256"}, {"image.height", "192"}};
+    auto with = [&](std::string_view technique) {
+        auto o = size;
+        o.push_back({"technique", techniqueJson(technique)});
+        return renderScene(scene, o);
+    };
+    const Image exact = with("exact");
+    for (const auto& t : penumbra::techniques::allTechniques()) {
+        if (t.name == "exact") continue;
+        const Errors e = errorsAgainst(exact, with(t.name));
+        std::printf("default scene, %-9s: visibility error %.4f, beauty error %.4f\n",
+                    std::string(t.name).c_str(), e.visibility, e.beauty);
+        EXPECT_LE(e.beauty, cssSlack(t.name) * e.visibility) << t.name;
+    }
+}
