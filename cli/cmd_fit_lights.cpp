@@ -77,6 +77,8 @@ int runFitLights(const Args& args) {
         }
     }
     if (!input) c.fail("missing ENV.exr (see penumbra fit-lights --help)");
+    if (output) checkOutputPath(*output, "--output");
+    if (png) checkOutputPath(*png, "--png");
     const auto image = scene::loadEnvironmentImage(*input);
     const scene::CubeFaces faces = scene::toCubeFaces(*image, face_size);
     const scene::LightFit fit = scene::fitLights(faces, settings);

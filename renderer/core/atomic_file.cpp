@@ -8,8 +8,12 @@
 #include <fstream>
 
 #include "renderer/core/error.h"
+#include "renderer/core/regular_file.h"
 
 namespace penumbra {
+namespace {
+constexpr const char* kOnlyRegular = " (an output replaces only a regular file)";
+}  // namespace
 
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
     std::filesystem::path dir = path.parent_path();
@@ -30,6 +34,9 @@ void writeAtomically(const std::filesystem::path& path,
             throw RuntimeError(path.parent_path().string() +
                                ": cannot create folder: " + ec.message());
     }
+    // rename() replaces whatever is at PATH: a device node, a FIFO, a link, an empty folder.
+    if (const std::string why = notReplaceableReason(path); !why.empty())
+        throw RuntimeError(path.string() + ": " + why + kOnlyRegular);
     const std::filesystem::path tmp = temporaryPathFor(path);
     try {
         write(tmp);
@@ -42,9 +49,15 @@ void writeAtomically(const std::filesystem::path& path,
     }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
+        const std::string why = ec.message();  // before remove() overwrites EC
         std::filesystem::remove(tmp, ec);
-        throw RuntimeError(path.string() + ": cannot rename into place: " + ec.message());
+        throw RuntimeError(path.string() + ": cannot rename into place: " + why);
     }
+}
+
+void checkOutputPath(const std::filesystem::path& path, const std::string& label) {
+    if (const std::string why = notReplaceableReason(path); !why.empty())
+        throw InputError(label + ": " + path.string() + ": " + why + kOnlyRegular);
 }
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& text) {

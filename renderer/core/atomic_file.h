@@ -12,9 +12,14 @@ namespace penumbra {
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
 
 // Creates PATH's parent folders, calls WRITE(temporary path), then renames it to PATH.
+// Something other than a regular file at PATH (a device, FIFO, folder or link) is not replaced.
 // On any failure the temporary file is removed and RuntimeError names PATH.
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path&)>& write);
+
+// For checking outputs before any work: throws InputError("LABEL: PATH: ...") when
+// writeAtomically would refuse to replace what is at PATH.
+void checkOutputPath(const std::filesystem::path& path, const std::string& label);
 
 // Writes TEXT to PATH atomically.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& text);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 
 namespace penumbra {
 namespace {
@@ -143,35 +144,35 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
             case ParamType::Int: {
                 double d = v.is_number() ? v.get<double>() : NAN;
                 if (!v.is_number() || d != std::floor(d))
-                    throw InputError(at + "expected a whole number, got " + v.dump());
+                    throw InputError(at + "expected a whole number, got " + quoteJson(v));
                 if (d < s.min || d > s.max)
-                    throw InputError(at + v.dump() + " is out of range [" + number(s.min) + ", " +
-                                     number(s.max) + "]");
+                    throw InputError(at + quoteJson(v) + " is out of range [" + number(s.min) +
+                                     ", " + number(s.max) + "]");
                 out[key] = static_cast<long long>(d);
                 break;
             }
             case ParamType::Float: {
-                if (!v.is_number()) throw InputError(at + "expected a number, got " + v.dump());
+                if (!v.is_number()) throw InputError(at + "expected a number, got " + quoteJson(v));
                 double d = v.get<double>();
                 if (!std::isfinite(d) || d < s.min || d > s.max)
-                    throw InputError(at + v.dump() + " is out of range [" + number(s.min) + ", " +
-                                     number(s.max) + "]");
+                    throw InputError(at + quoteJson(v) + " is out of range [" + number(s.min) +
+                                     ", " + number(s.max) + "]");
                 out[key] = d;
                 break;
             }
             case ParamType::Bool:
                 if (!v.is_boolean())
-                    throw InputError(at + "expected true or false, got " + v.dump());
+                    throw InputError(at + "expected true or false, got " + quoteJson(v));
                 out[key] = v.get<bool>();
                 break;
             case ParamType::Enum:
                 if (!v.is_string() || !choiceAllowed(s.choices, v.get<std::string>()))
                     throw InputError(at + "expected one of " + choiceList(s.choices) + ", got " +
-                                     v.dump());
+                                     quoteJson(v));
                 out[key] = v.get<std::string>();
                 break;
             case ParamType::String:
-                if (!v.is_string()) throw InputError(at + "expected a string, got " + v.dump());
+                if (!v.is_string()) throw InputError(at + "expected a string, got " + quoteJson(v));
                 out[key] = v.get<std::string>();
                 break;
         }

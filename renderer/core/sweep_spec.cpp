@@ -6,6 +6,7 @@
 #include <set>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 
 namespace penumbra {
 namespace {
@@ -48,11 +49,10 @@ std::vector<std::string_view> splitTopLevel(std::string_view s) {
 
 nlohmann::json parseValue(std::string_view text, const std::string& where) {
     if (text.empty()) throw InputError(where + ": empty value");
-    auto v = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
-    if (!v.is_discarded()) return v;
+    if (auto v = parseJsonBounded(text, where)) return std::move(*v);
     const char first = text.front();
     if (first == '[' || first == '{' || first == '"')
-        throw InputError(where + ": '" + std::string(text) + "' is not valid JSON");
+        throw InputError(where + ": '" + quoteText(text) + "' is not valid JSON");
     return std::string(text);  // a bare word
 }
 
@@ -97,7 +97,7 @@ bool parseRange(std::string_view text, const std::string& where, VaryAxis& axis)
 }  // namespace
 
 VaryAxis parseVary(std::string_view text) {
-    const std::string where = "--vary " + std::string(text);
+    const std::string where = "--vary " + quoteText(text);
     size_t eq = text.find('=');
     if (eq == std::string_view::npos || eq == 0)
         throw InputError(where + ": expected KEY=V1,V2,... or KEY=A:B:N[:log]");

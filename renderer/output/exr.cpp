@@ -25,6 +25,7 @@
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
+#include "renderer/core/regular_file.h"
 
 namespace penumbra::output {
 
@@ -117,10 +118,9 @@ void writeExr(const std::filesystem::path& path, const Image& image) {
 
 Image readExr(const std::filesystem::path& path) {
     const std::string where = path.string() + ": ";
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) throw UnreadableImage(where + "no such file");
-    if (std::filesystem::is_directory(status)) throw UnreadableImage(where + "is a folder");
+    // A FIFO or device would block or never end: regular files only.
+    if (const std::string why = notRegularFileReason(path); !why.empty())
+        throw UnreadableImage(where + why);
 
     if (!std::ifstream(path, std::ios::binary))
         throw UnreadableImage(where + "cannot open: " + std::strerror(errno));

@@ -10,8 +10,10 @@
 #include <set>
 
 #include "penumbra/version.h"
+#include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
 #include "renderer/core/frame_spec.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/core/output_paths.h"
 #include "renderer/gl/debug.h"
 #include "renderer/output/exr.h"
@@ -39,7 +41,8 @@ const techniques::TechniqueInfo& findTechniqueOrThrow(const scene::Scene& s,
     for (const auto& t : techniques::allTechniques())
         known += (known.empty() ? "" : ", ") + std::string(t.name);
     std::string where = req.technique ? "--technique" : s.path.string() + ": technique.name";
-    throw InputError(where + ": unknown technique '" + name + "' (known: " + known + ")");
+    throw InputError(where + ": unknown technique '" + quoteText(name) + "' (known: " + known +
+                     ")");
 }
 
 Params resolveFor(const techniques::TechniqueInfo& info, const scene::Scene& s) {
@@ -63,6 +66,7 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& s
              {std::pair{p.exr, "--output"}, std::pair{p.timing, "--timings"},
               std::pair{p.preview, "--preview"}}) {
             if (path.empty()) continue;
+            checkOutputPath(path, flag);  // no device, FIFO or folder replaced by the rename
             auto [it, inserted] = seen.emplace(path, f);
             if (!inserted)
                 throw InputError(std::string(flag) + ": frames " + std::to_string(it->second) +

@@ -17,6 +17,7 @@
 #include "penumbra/version.h"
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/gl/debug.h"
 #include "renderer/output/compare.h"
 #include "renderer/output/exr.h"
@@ -24,6 +25,7 @@
 #include "renderer/output/preview.h"
 #include "renderer/output/timing.h"
 #include "renderer/render/frame_renderer.h"
+#include "renderer/scene/json_file.h"
 
 namespace penumbra::render {
 namespace {
@@ -32,7 +34,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr size_t kMaxRuns = 2000;
-constexpr float kHeatmapFullScale = 0.25f;  // |dV| of 0.25 or more is drawn white
+constexpr size_t kMaxRecordBytes = size_t{16} << 20;  // runs/run-NNNN.json, read back on reruns
+constexpr float kHeatmapFullScale = 0.25f;            // |dV| of 0.25 or more is drawn white
 
 // One render to make: its scene settings, validated, and the hash of what determines its image.
 struct Job {
@@ -63,7 +66,7 @@ void validate(Job& job, const SweepRequest& req) {
     const auto* info = techniques::findTechnique(job.technique_name);
     if (!info)
         throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
-                         job.technique_name + "'");
+                         quoteText(job.technique_name) + "'");
     resolveParams(info->params, s.technique, req.scene.string() + ": technique");
     job.hash = fnv1a(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
                      PENUMBRA_VERSION);
@@ -163,7 +166,8 @@ std::string toCsv(const json& sweep) {
     return out.str();
 }
 
-bool spawnAndWait(const std::vector<std::string>& args, bool quiet);
+bool spawnAndWait(const std::vector<std::string>& args, bool quiet,
+                  const fs::path& stdin_file = {});
 
 bool runReport(const fs::path& dir, bool quiet) {
     const char* env = std::getenv("PENUMBRA_SWEEP_REPORT");
@@ -178,14 +182,17 @@ bool runReport(const fs::path& dir, bool quiet) {
     return spawnAndWait({script.string(), dir.string()}, quiet);  // no shell: no quoting
 }
 
-// Spawns ARGV (argv[0] looked up in PATH) and waits; STDOUT to /dev/null when QUIET.
-bool spawnAndWait(const std::vector<std::string>& args, bool quiet) {
+// Spawns ARGV (argv[0] looked up in PATH) and waits; STDOUT to /dev/null when QUIET, STDIN
+// from STDIN_FILE when given.
+bool spawnAndWait(const std::vector<std::string>& args, bool quiet, const fs::path& stdin_file) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     if (quiet) posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    if (!stdin_file.empty())
+        posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, stdin_file.c_str(), O_RDONLY, 0);
     pid_t pid = 0;
     int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -196,17 +203,32 @@ bool spawnAndWait(const std::vector<std::string>& args, bool quiet) {
 }
 
 // Renders runs 1..COUNT as `penumbra sweep ... --run-index K` jobs, REQ.jobs at a time, through
-// GNU parallel. False when parallel is missing or a job failed.
+// GNU parallel. No user value is in parallel's command line, where its shell and replacement
+// strings ({}, {= perl =}) would interpret it: each job's argv goes NUL-separated to parallel's
+// stdin, and the command is only {1} {2} ... {N}, each a quoted word of that argv (-q).
+// False when parallel is missing or a job failed.
 bool runParallel(const SweepRequest& req, size_t count) {
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) return false;
-    std::vector<std::string> args = {"parallel",    "--will-cite", "-j", std::to_string(req.jobs),
-                                     self.string(), "sweep"};
-    args.insert(args.end(), req.job_args.begin(), req.job_args.end());
-    args.insert(args.end(), {"--run-index", "{}", "--quiet", ":::"});
-    for (size_t k = 1; k <= count; ++k) args.push_back(std::to_string(k));
-    return spawnAndWait(args, req.quiet);
+    std::vector<std::string> job = {self.string(), "sweep"};
+    job.insert(job.end(), req.job_args.begin(), req.job_args.end());
+    job.insert(job.end(), {"--quiet", "--run-index"});
+    std::string input;
+    for (size_t k = 1; k <= count; ++k) {
+        for (const auto& word : job) input += word + '\0';
+        input += std::to_string(k) + '\0';
+    }
+    const fs::path list = req.out / "cache" / (".parallel-jobs." + std::to_string(::getpid()));
+    writeFileAtomically(list, input);
+    const size_t words = job.size() + 1;
+    std::vector<std::string> args = {"parallel", "--will-cite", "-j", std::to_string(req.jobs),
+                                     "-0",       "-q",          "-N", std::to_string(words)};
+    for (size_t w = 1; w <= words; ++w)
+        args.push_back(std::string(1, '{').append(std::to_string(w)).append("}"));
+    const bool ok = spawnAndWait(args, req.quiet, list);
+    fs::remove(list, ec);
+    return ok;
 }
 
 }  // namespace
@@ -299,11 +321,15 @@ int runSweepJob(const SweepRequest& req) {
         for (const auto& [key, value] : points[i]) values[key] = value;
         json entry;
         if (fs::exists(record)) {
-            std::ifstream in(record);
-            json old = json::parse(in, nullptr, false);
-            if (!old.is_discarded() && old.value("settings_hash", "") == runs[i].hash &&
-                fs::exists(req.out / old.value("exr", std::string("-"))))
-                entry = old;
+            try {  // a record that is not this run's (or not a bounded JSON file) is redone
+                json old = scene::parseJsonText(
+                    scene::readTextFile(record, record.string(), kMaxRecordBytes), record.string());
+                if (old.is_object() && old.value("settings_hash", "") == runs[i].hash &&
+                    fs::exists(req.out / old.value("exr", std::string("-"))))
+                    entry = old;
+            } catch (const InputError&) {
+            } catch (const json::exception&) {
+            }
         }
         if (entry.is_null()) {
             if (progress)

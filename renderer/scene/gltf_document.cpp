@@ -5,7 +5,10 @@
 #include <fstream>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
+#include "renderer/core/regular_file.h"
 #include "renderer/scene/glb_container.h"
+#include "renderer/scene/gltf_uri.h"
 #include "renderer/scene/json_field.h"
 #include "renderer/scene/json_file.h"
 
@@ -53,13 +56,11 @@ bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string
     return true;
 }
 
-// File access for tinygltf: only under the glTF's folder (no fallback to the working
-// directory), with the same size limit as the glTF itself.
+// File access for tinygltf: only regular files inside the glTF's folder (no fallback to the
+// working directory), with the same size limit as the glTF itself.
 bool fileExists(const std::string& path, void* user) {
     const auto* base = static_cast<const std::string*>(user);
-    if (path.rfind(*base, 0) != 0) return false;
-    std::error_code ec;
-    return std::filesystem::is_regular_file(path, ec);
+    return insideFolder(*base, path) && notRegularFileReason(path).empty();
 }
 std::string expandFilePath(const std::string& path, void*) {
     return path;
@@ -77,45 +78,6 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
 }
 bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
     return false;
-}
-
-// URI percent-decoding, as tinygltf applies to buffer URIs before opening them.
-std::string percentDecode(const std::string& uri) {
-    std::string out;
-    for (std::size_t i = 0; i < uri.size(); ++i) {
-        const auto hex = [](char c) {
-            if (c >= '0' && c <= '9') return c - '0';
-            if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-            if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-            return -1;
-        };
-        if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
-            out += static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
-            i += 2;
-        } else {
-            out += uri[i];
-        }
-    }
-    return out;
-}
-
-// External buffer files must exist: named here with their key (tinygltf only says "not found").
-void checkBufferFiles(const GltfDocument& doc, const nlohmann::json& json,
-                      const std::string& base_dir) {
-    const auto buffers = json.find("buffers");
-    if (buffers == json.end()) return;
-    for (std::size_t i = 0; i < buffers->size(); ++i) {
-        const auto uri = (*buffers)[i].find("uri");
-        if (uri == (*buffers)[i].end()) continue;
-        const std::string text = uri->get<std::string>();
-        if (text.rfind("data:", 0) == 0) continue;
-        std::error_code ec;
-        const std::filesystem::path file = std::filesystem::path(base_dir) / percentDecode(text);
-        if (!std::filesystem::is_regular_file(file, ec))
-            doc.fail("buffers." + std::to_string(i) + ".uri",
-                     "cannot read '" + text + "' (" +
-                         (std::filesystem::exists(file, ec) ? "not a file" : "no such file") + ")");
-    }
 }
 
 std::string oneLine(std::string text) {
@@ -145,12 +107,12 @@ GltfDocument readGltfDocument(const std::filesystem::path& path) {
         for (const auto& name : *required)
             if (!isIgnorableExtension(name.get<std::string>()))
                 doc.fail("extensionsRequired",
-                         "unsupported extension '" + name.get<std::string>() + "'");
+                         "unsupported extension '" + quoteText(name.get<std::string>()) + "'");
     doc.draco = takeDraco(json);
 
     std::string base_dir = path.parent_path().string();
     if (base_dir.empty()) base_dir = ".";
-    checkBufferFiles(doc, json, base_dir);
+    const std::vector<std::string> image_uris = confineAssetUris(json, base_dir, doc);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keepImageBytes, nullptr);
     loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &base_dir});
@@ -172,6 +134,8 @@ GltfDocument readGltfDocument(const std::filesystem::path& path) {
         throw InputError(doc.label + ": " + e.what());
     }
     if (!ok) throw InputError(doc.label + ": " + oneLine(err.empty() ? warn : err));
+    for (std::size_t i = 0; i < doc.model.images.size() && i < image_uris.size(); ++i)
+        doc.model.images[i].uri = image_uris[i];  // as written, not as rewritten for tinygltf
     return doc;
 }
 

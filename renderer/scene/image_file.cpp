@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "renderer/core/error.h"
+#include "renderer/core/regular_file.h"
 
 namespace penumbra::scene {
 namespace {
@@ -25,10 +26,7 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
         throw InputError(label + ": expected " + std::string(expected));
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(label + ": " +
-                         (std::filesystem::exists(path, ec) ? "not a file" : "no such file"));
+    requireRegularFile(path, label);
 
     auto input = OIIO::ImageInput::open(path.string());
     if (!input) throw InputError(label + ": cannot read image" + oneLine(OIIO::geterror()));

@@ -1,5 +1,5 @@
-// JSON files: whole-file reads with a size limit, and parsing that reports the position of a
-// syntax error and the dotted key of a duplicate member.
+// JSON files: whole-file reads (regular files only) with a size limit, and parsing with a nesting
+// limit that reports the position of a syntax error and the dotted key of a duplicate member.
 #include "renderer/scene/json_file.h"
 
 #include <cerrno>
@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
+#include "renderer/core/regular_file.h"
 #include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
@@ -31,21 +33,11 @@ std::string pathOf(const std::vector<OpenContainer>& stack, std::size_t depth) {
     return key;
 }
 
-// nlohmann's messages start with "[json.exception.parse_error.101] "; keep what follows.
-std::string parserMessage(const char* what) {
-    std::string message = what;
-    const std::size_t close = message.find("] ");
-    if (message.rfind("[json.exception", 0) == 0 && close != std::string::npos)
-        message.erase(0, close + 2);
-    return message;
-}
-
 }  // namespace
 
 std::string readTextFile(const std::filesystem::path& path, const std::string& label,
                          std::size_t max_bytes) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(label + ": is a directory");
+    requireRegularFile(path, label);  // a FIFO or device would block or never end
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(label + ": cannot open file (" + std::strerror(errno) + ")");
     in.seekg(0, std::ios::end);
@@ -64,7 +56,8 @@ std::string readTextFile(const std::filesystem::path& path, const std::string& l
 nlohmann::json parseJsonText(const std::string& text, const std::string& label) {
     std::vector<OpenContainer> stack;
     using Event = nlohmann::json::parse_event_t;
-    auto onEvent = [&](int, Event event, nlohmann::json& parsed) {
+    auto onEvent = [&](int depth, Event event, nlohmann::json& parsed) {
+        checkJsonDepth(depth, event, label);  // before anything recurses over the document
         switch (event) {
             case Event::object_start:
             case Event::array_start:
@@ -75,7 +68,7 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& label) 
                 top.current_key = parsed.get<std::string>();
                 if (!top.keys.insert(top.current_key).second) {
                     const std::string where = pathOf(stack, stack.size() - 1);
-                    failAt(label, where, "duplicate key '" + top.current_key + "'");
+                    failAt(label, where, "duplicate key '" + quoteText(top.current_key) + "'");
                 }
                 break;
             }
@@ -93,7 +86,7 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& label) 
     try {
         return nlohmann::json::parse(text, onEvent);
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(label + ": invalid JSON: " + parserMessage(e.what()));
+        throw InputError(label + ": invalid JSON: " + jsonErrorMessage(e.what()));
     }
 }
 

@@ -10,11 +10,12 @@
 
 namespace penumbra::scene {
 
-// Reads the whole file at PATH (at most MAX_BYTES). Throws InputError("<label>: ...").
+// Reads the whole regular file at PATH (at most MAX_BYTES). Throws InputError("<label>: ...").
 std::string readTextFile(const std::filesystem::path& path, const std::string& label,
                          std::size_t max_bytes);
 
-// Parses TEXT as JSON, refusing duplicate object keys. Errors start with LABEL.
+// Parses TEXT as JSON, refusing duplicate object keys and nesting deeper than kMaxJsonDepth.
+// Errors start with LABEL.
 nlohmann::json parseJsonText(const std::string& text, const std::string& label);
 
 }  // namespace penumbra::scene

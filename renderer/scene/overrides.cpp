@@ -3,6 +3,7 @@
 #include "renderer/scene/overrides.h"
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/scene/dotted_key.h"
 #include "renderer/scene/json_field.h"
 
@@ -53,30 +54,20 @@ void applyTechniqueOption(nlohmann::json& doc, const std::optional<std::string>&
     if (!technique) return;
     const auto it = doc.find("technique");
     if (it != doc.end() && it->is_object()) {
-        const auto name = it->find("name");
-        if (name != it->end() && name->is_string() && name->get<std::string>() == *technique)
-            return;
+        const nlohmann::json& block = *it;
+        if (block.contains("name") && block["name"] == nlohmann::json(*technique)) return;
     }
     doc["technique"] = nlohmann::json{{"name", *technique}};
 }
 
 nlohmann::json parseOverrideValue(const Override& o) {
-    nlohmann::json value = nlohmann::json::parse(o.value, nullptr, false);
-    if (!value.is_discarded()) return value;
+    std::string why;
+    if (auto value = parseJsonBounded(o.value, "-D " + o.key, &why)) return std::move(*value);
     // Text that starts like JSON structure or a JSON string was meant as JSON: say why it is not.
     const std::size_t first = o.value.find_first_not_of(" \t\r\n");
     if (first != std::string::npos &&
-        (o.value[first] == '[' || o.value[first] == '{' || o.value[first] == '"')) {
-        try {
-            const nlohmann::json unused = nlohmann::json::parse(o.value);
-            (void)unused;
-        } catch (const nlohmann::json::exception& e) {
-            std::string message = e.what();
-            const std::size_t close = message.find("] ");
-            if (close != std::string::npos) message.erase(0, close + 2);
-            failOverride(o, "value is not valid JSON: " + message);
-        }
-    }
+        (o.value[first] == '[' || o.value[first] == '{' || o.value[first] == '"'))
+        failOverride(o, "value is not valid JSON: " + why);
     return o.value;  // a bare word: the string itself
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 
 namespace penumbra::scene {
 namespace {
@@ -137,8 +138,8 @@ Scene buildScene(const nlohmann::json& doc, const SceneContext& context) {
     const Field format = root.member("format");
     if (!format.present()) format.fail(std::string("missing (expected \"") + kSceneFormat + "\")");
     if (format.string() != kSceneFormat)
-        format.fail("unsupported format '" + format.string() + "' (expected \"" + kSceneFormat +
-                    "\")");
+        format.fail("unsupported format '" + quoteText(format.string()) + "' (expected \"" +
+                    kSceneFormat + "\")");
 
     Scene scene;
     scene.path = context.file;
@@ -146,6 +147,12 @@ Scene buildScene(const nlohmann::json& doc, const SceneContext& context) {
     if (const Field name = root.member("name"); name.present()) {
         scene.name = name.string();
         if (scene.name.empty()) name.fail("empty name");
+        // The default output is out/<name>.####.exr: a path would write outside out/.
+        if (scene.name == "." || scene.name == ".." ||
+            scene.name.find_first_of(std::string("/\0", 2)) != std::string::npos ||
+            scene.name.size() > 200)
+            name.fail("'" + quoteText(scene.name) +
+                      "' is not a plain file name (no '/', not '.' or '..', at most 200 bytes)");
     }
     scene.camera = readCamera(root.member("camera"));
     scene.image = readImage(root.member("image"), context.max_image_size);

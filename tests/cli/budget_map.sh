@@ -24,6 +24,6 @@ bad ramp.jpg "ramp.jpg: expected a .png or .exr image"
 echo "not a png" >text.png
 bad text.png "text.png: cannot read image"
 mkdir folder.png
-bad folder.png "folder.png: not a file"
+bad folder.png "folder.png: is a folder"
 [ -z "$(ls -A | grep '\.tmp$' || true)" ] || fail "temporary files left behind"
 echo "budget_map ok"

@@ -28,3 +28,32 @@ expect_exit() {
         fail "no message for a failure: $*"
     fi
 }
+
+# write_triangle_gltf FILE.gltf BUFFER_URI [BIN]: a one-triangle glTF whose buffer is BUFFER_URI
+# (written as BIN, 36 bytes, when given).
+write_triangle_gltf() {
+    python3 - "$@" <<'PY'
+import json, struct, sys
+gltf, uri = sys.argv[1], sys.argv[2]
+data = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+if len(sys.argv) > 3:
+    open(sys.argv[3], "wb").write(data)
+json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+           "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                          "min": [0, 0, 0], "max": [1, 1, 0]}],
+           "bufferViews": [{"buffer": 0, "byteLength": 36}],
+           "buffers": [{"uri": uri, "byteLength": 36}]}, open(gltf, "w"))
+PY
+}
+
+# write_scene_with_gltf SCENE.json GLTF: tests/data/cli/small.json, still, with GLTF as an object.
+write_scene_with_gltf() {
+    python3 - "$DATA/small.json" "$@" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+del scene["animation"]
+scene["objects"].append({"name": "asset", "gltf": sys.argv[3]})
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+}

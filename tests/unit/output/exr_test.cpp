@@ -199,7 +199,7 @@ TEST(Exr, FailedWriteLeavesNothingBehind) {
     image.height = 1;
     image.add("R", PixelType::Half);
 
-    // The final name is a folder: the rename fails after the temporary file was written.
+    // The final name is a folder: refused before the temporary file is written.
     std::filesystem::create_directories(dir / "taken.exr/inside");
     EXPECT_THROW(writeExr(dir / "taken.exr", image), RuntimeError);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken.exr"});

@@ -71,7 +71,7 @@ TEST(EnvironmentImage, Refusals) {
                   junk.string() + ": cannot read image");
     const auto dir = test::scratchDir() / "folder.exr";
     std::filesystem::create_directories(dir);
-    expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": not a file");
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": is a folder");
 }
 
 TEST(EnvironmentImage, SceneNamesTheKeyAndPath) {

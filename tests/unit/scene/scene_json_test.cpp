@@ -259,7 +259,7 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["objects"][1] = {{"gltf", "missing.glb"}};
          },
-         "objects.1.gltf: " + (test::scratchDir() / "missing.glb").string() + ": cannot open file"},
+         "objects.1.gltf: " + (test::scratchDir() / "missing.glb").string() + ": no such file"},
         {"transform type",
          [](json& d) {
              d["objects"][1]["transform"] = {1, 2, 3};
@@ -379,10 +379,10 @@ TEST(SceneJson, MaxImageSizeComesFromTheOptions) {
 TEST(SceneJson, FileErrorsNameThePath) {
     const std::string missing = (test::scratchDir() / "no-such-scene.json").string();
     expectMessage(inputErrorOf([&] { SceneSource::load(missing, {}); }),
-                  missing + ": cannot open file");
+                  missing + ": no such file");
     const auto dir = test::scratchDir();
     expectMessage(inputErrorOf([&] { SceneSource::load(dir, {}); }),
-                  dir.string() + ": is a directory");
+                  dir.string() + ": is a folder");
 }
 
 TEST(SceneJson, MalformedJsonGivesThePosition) {

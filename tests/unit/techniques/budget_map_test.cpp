@@ -74,7 +74,7 @@ TEST(BudgetMap, RefusalsNameTheKeyAndThePath) {
     EXPECT_EQ(errorOf(scene, "missing.png"), key + "missing.png: no such file");
     EXPECT_EQ(errorOf(scene, "map.jpg"), key + "map.jpg: expected a .png or .exr image");
     std::filesystem::create_directories(dir / "folder.png");
-    EXPECT_EQ(errorOf(scene, "folder.png"), key + "folder.png: not a file");
+    EXPECT_EQ(errorOf(scene, "folder.png"), key + "folder.png: is a folder");
     std::ofstream(dir / "text.png") << "not a png\n";
     EXPECT_EQ(errorOf(scene, "text.png").rfind(key + "text.png: cannot read image", 0), 0u)
         << errorOf(scene, "text.png");
