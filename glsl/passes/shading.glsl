@@ -23,6 +23,9 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { GpuLight u_lig
 // from the others).
 layout(binding = 3) uniform sampler2DArray u_visibility;
 uniform int u_light_count;
+// The layer holding the environment's irradiance per pixel (rgb: shadowed, a: unshadowed
+// luminance; written by `exact`), or -1.
+uniform int u_env_layer = -1;
 
 const float kPi = 3.14159265358979;
 
@@ -58,7 +61,19 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, ivec2 vis_pix, out float visibili
         den += l.radiance.w * e;
         plain += v;
     }
-    visibility = clamp(den > 0.0 ? num / den : plain / float(max(u_light_count, 1)), 0.0, 1.0);
+    int terms = u_light_count;
+    // A sample no representative pixel stands for (VIS_PIX.x < 0) has no environment term: the
+    // layer is per pixel, and such slivers are rare.
+    if (u_env_layer >= 0 && vis_pix.x >= 0) {
+        vec4 env = texelFetch(u_visibility, ivec3(vis_pix, u_env_layer), 0);
+        radiance += albedo / kPi * env.rgb;
+        float shadowed = dot(env.rgb, vec3(0.2126, 0.7152, 0.0722));
+        num += shadowed;
+        den += env.a;
+        plain += env.a > 0.0 ? clamp(shadowed / env.a, 0.0, 1.0) : 1.0;
+        ++terms;
+    }
+    visibility = clamp(den > 0.0 ? num / den : plain / float(max(terms, 1)), 0.0, 1.0);
     return radiance;
 }
 

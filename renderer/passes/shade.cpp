@@ -55,7 +55,7 @@ void Shade::uploadLights(const std::vector<scene::RectLight>& lights) {
 }
 
 void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
-                   const std::vector<scene::RectLight>& lights) {
+                   const std::vector<scene::RectLight>& lights, int env_layer) {
     uploadLights(lights);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
@@ -67,6 +67,7 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glBindTextureUnit(2, gbuffer.albedo().id());
     glBindTextureUnit(3, visibility_layers.id());
     gl::setUniform(program_, "u_light_count", static_cast<int>(lights.size()));
+    gl::setUniform(program_, "u_env_layer", env_layer);
     fullscreen_.draw();
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -74,7 +75,7 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
 
 void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
                           const gl::Texture& visibility_layers,
-                          const std::vector<scene::RectLight>& lights) {
+                          const std::vector<scene::RectLight>& lights, int env_layer) {
     if (samples.samples() != samples_)
         throw RuntimeError("shade: built for " + std::to_string(samples_) + " samples, given " +
                            std::to_string(samples.samples()));
@@ -111,6 +112,7 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     const auto& p = samples_program_;
     glUseProgram(p.id());
     gl::setUniform(p, "u_light_count", static_cast<int>(lights.size()));
+    gl::setUniform(p, "u_env_layer", env_layer);
     gl::setUniform(p, "u_samples", samples_);
     gl::setUniform(p, "u_guide", guide_ == SampleGuide::Depth ? 1 : 0);
     glBeginQuery(GL_SAMPLES_PASSED, pixels_.id());

@@ -28,13 +28,15 @@ public:
     // SAMPLES > 1 also builds the multisampled programs (renderSamples()).
     Shade(int width, int height, int samples = 1);
     // One shading per pixel: the G-buffer point with its own visibility layers.
+    // ENV_LAYER >= 0: the layer of VISIBILITY_LAYERS that holds the environment's irradiance
+    // (shadowed rgb, unshadowed luminance in a), added to beauty.
     void render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
-                const std::vector<scene::RectLight>& lights);
+                const std::vector<scene::RectLight>& lights, int env_layer = -1);
     // After render(): marks the pixels where a sample of SAMPLES differs from the representative
     // (stencil), then shades and averages every sample of those pixels.
     void renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
                        const gl::Texture& visibility_layers,
-                       const std::vector<scene::RectLight>& lights);
+                       const std::vector<scene::RectLight>& lights, int env_layer = -1);
     void setSampleGuide(SampleGuide guide) { guide_ = guide; }
     // Pixels the last renderSamples() shaded per sample (waits for the GPU).
     double samplePixels() const;

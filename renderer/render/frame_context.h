@@ -65,6 +65,9 @@ public:
     const scene::RectLight& currentLight() const { return lights[static_cast<size_t>(light)]; }
     // Whether the current light stands for part of the environment map.
     bool environmentLight() const { return light >= static_cast<int>(scene.lights.size()); }
+    // Whether this is the environment's irradiance layer (after every light; see
+    // techniques::EnvironmentLights), which has no currentLight().
+    bool environmentLayer() const { return light == static_cast<int>(lights.size()); }
 
     // Runs FN as one named, timed pass. With several lights, a technique's pass (light >= 0)
     // gets "@<light>" appended.

@@ -32,7 +32,8 @@ void FrameRenderer::setParams(const Params& params) {
     const int before = lights_;
     environment_ = {};
     if (first_.environment && info_.environment) environment_ = info_.environment(params_, first_);
-    lights_ = static_cast<int>(first_.lights.size() + environment_.lights.size());
+    lights_ = static_cast<int>(first_.lights.size() + environment_.lights.size()) +
+              (environment_.irradiance_layer ? 1 : 0);
     auto diagnostics = technique_->diagnostics();
     if (!targets_ || diagnostics.size() != diagnostics_.size() || lights_ != before)
         targets_ = std::make_unique<OutputTargets>(width_, height_, lights_,
@@ -59,10 +60,13 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
         technique_->render(ctx);
     }
     ctx.light = -1;
-    ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_); });
+    const int env_layer = environment_.irradiance_layer ? lights_ - 1 : -1;
+    ctx.pass("shade",
+             [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_, env_layer); });
     if (sample_gbuffer_) {
         ctx.pass("shade_msaa", [&] {
-            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), all_lights_);
+            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), all_lights_,
+                                 env_layer);
         });
         // The pixels shaded per sample: where a sample shows another surface than the pixel.
         const double pixels = shade_.samplePixels();

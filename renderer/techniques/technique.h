@@ -34,9 +34,12 @@ public:
     virtual std::vector<DiagnosticChannel> diagnostics() const { return {}; }
 };
 
-// Lights a technique makes of the scene's environment map, rendered after the scene's own.
+// Lights a technique makes of the scene's environment map, rendered after the scene's own; or,
+// with irradiance_layer, one more output layer after them that the technique fills per pixel
+// with the environment's shadowed irradiance (rgb) and unshadowed luminance irradiance (a).
 struct EnvironmentLights {
     std::vector<scene::RectLight> lights;
+    bool irradiance_layer = false;
     nlohmann::json stats = nlohmann::json::object();  // e.g. lights fitted, energy captured
 };
 

@@ -1,5 +1,5 @@
 // `adaptive` on small scenes: the quadtree's map and comparison counts, the refinement
-// diagnostic, and shadow-region error against `reference` N = 32 for fewer maps than N = 16.
+// diagnostic, and shadow-region error against `exact` N = 32 for fewer maps than N = 16.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,10 +55,10 @@ std::string reference(int n) {
     return R"({"name": "reference", "map_size": 512, "samples": )" + std::to_string(n) + "}";
 }
 
-// The issue's bar on SCENE: default adaptive at most as far from reference N = 32 as
+// The issue's bar on SCENE: default adaptive at most as far from exact N = 32 as
 // reference N = 8 is, with at most a third of the 256 maps reference N = 16 renders.
 void checkAgainstReference(const std::string& scene) {
-    const auto truth = render(scene, reference(32)).visibility;
+    const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
     const double ref8 = shadowRegionMae(render(scene, reference(8)).visibility, truth);
     const auto a = render(scene, adaptive());
     const double mae = shadowRegionMae(a.visibility, truth);
@@ -128,7 +128,7 @@ TEST(AdaptiveGL, CompareStrideEstimatesTheFullCount) {
 TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
     // Epsilon 0.01 leaves the closed-form quadtree partly refined (22 maps), where the three
     // weightings differ. Area weights integrate the bilinear interpolant of the samples.
-    const auto truth = render("closed_form.json", reference(32)).visibility;
+    const auto truth = render("closed_form.json", penumbra::testing::kGroundTruth).visibility;
     double mae[3];
     const char* names[3] = {"area", "paper", "equal"};
     for (int i = 0; i < 3; ++i) {
@@ -170,7 +170,7 @@ TEST(AdaptiveGL, DefaultSceneMatchesReferenceWithFewMaps) {
 }
 
 TEST(AdaptiveGL, ErrorFallsAsEpsilonFalls) {
-    const auto truth = render("closed_form.json", reference(32)).visibility;
+    const auto truth = render("closed_form.json", penumbra::testing::kGroundTruth).visibility;
     double last = 1e9;
     int last_maps = 0;
     for (const char* eps : {"0.05", "0.01", "0.003", "0.0"}) {
@@ -221,7 +221,7 @@ TEST(AdaptiveGL, TileMetricRefinesASmallShadowTheGlobalOneMisses) {
     // The shadow covers about 1 % of the frame: the paper's global metric (5.1) sees too few
     // disagreeing pixels and stops at the corners; the tile metric refines where it is.
     const std::string scene = "adaptive_small_shadow.json";
-    const auto truth = render(scene, reference(32)).visibility;
+    const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
     auto global = render(scene, adaptive());
     auto tile = render(scene, adaptive(R"(, "metric": "tile")"));
     const double mae_global = shadowRegionMae(global.visibility, truth, 100);
@@ -245,7 +245,7 @@ TEST(AdaptiveGL, LightCentreReprojectionIsViewIndependent) {
     EXPECT_EQ(a.stats.value("maps_rendered", 0), b.stats.value("maps_rendered", 0));
     EXPECT_EQ(a.stats.value("comparisons", 0), b.stats.value("comparisons", 0));
     EXPECT_GT(a.stats.value("maps_rendered", 0), 4);
-    const auto truth = render("closed_form.json", reference(32)).visibility;
+    const auto truth = render("closed_form.json", penumbra::testing::kGroundTruth).visibility;
     const double mae = shadowRegionMae(a.visibility, truth);
     const double ref4 = shadowRegionMae(render("closed_form.json", reference(4)).visibility, truth);
     std::printf("light-centre reprojection: MAE %.5f with %d maps; reference N=4 MAE %.5f\n", mae,
@@ -261,7 +261,7 @@ TEST(AdaptiveGL, ShadowTestComparisonRefinesWhereShadowsDiffer) {
     // epsilon 0.01: equal on the closed form (22 maps); on the default scene 14 maps (MAE 0.045)
     // against 75 (0.011), as depth differences over the casters themselves no longer count.
     for (const char* scene : {"closed_form.json", "adaptive_default.json"}) {
-        const auto truth = render(scene, reference(32)).visibility;
+        const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
         auto depth = render(scene, adaptive(R"(, "epsilon": 0.01)"));
         auto tests = render(scene, adaptive(R"(, "epsilon": 0.01, "compare": "shadow_test")"));
         const double mae_depth = shadowRegionMae(depth.visibility, truth);

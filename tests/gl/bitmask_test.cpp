@@ -30,6 +30,10 @@ const std::vector<float>& truthOf(const std::string& scene) {
     static std::string cached_scene;
     static std::vector<float> cached;
     if (cached_scene != scene) {
+        // Still `reference` N = 32, the truth these bounds were set against: against `exact`
+        // the image-wide error of unlimited bitmask is 0.062, not 0.03, because on the objects'
+        // own grazing surfaces it counts light as visible that exact's rays find behind the
+        // surface (floor alone: 0.0063). The conformance issue moves this to `exact`.
         auto ref = renderScene(scene, {{"technique", R"({"name": "reference", "samples": 32,
                                                          "map_size": 512})"}});
         cached = channel(ref, "visibility");

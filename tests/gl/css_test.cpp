@@ -1,5 +1,5 @@
 // `css` (convolution soft shadows, Annen et al. 2008) on the default scene and the floating
-// square of closed_form.json: shadow-region error against `reference` N = 32 and the closed
+// square of closed_form.json: shadow-region error against `exact` N = 32 and the closed
 // form, contact shadows, mipmap and SAT prefiltering, rectangular lights, diagnostics.
 #include <gtest/gtest.h>
 
@@ -23,14 +23,13 @@ std::string css(const std::string& extra = "") {
     return R"({"name": "css")" + extra + "}";
 }
 
-// `reference` N = 32 of SCENE (with OVERRIDES), rendered once per test binary.
+// The ground truth (`exact` N = 32) of SCENE (with OVERRIDES), rendered once per test binary.
 const Image& truth(const std::string& scene, const std::string& light_size = "") {
     static std::map<std::string, Image> cache;
     const std::string key = scene + light_size;
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
-    std::vector<penumbra::scene::Override> o = {
-        {"technique", R"({"name": "reference", "samples": 32, "map_size": 512})"}};
+    std::vector<penumbra::scene::Override> o = {{"technique", penumbra::testing::kGroundTruth}};
     if (!light_size.empty()) o.push_back({"lights.0.size", light_size});
     return cache.emplace(key, renderScene(scene, o)).first->second;
 }
@@ -65,8 +64,8 @@ TEST(CssGL, DefaultSceneMatchesReference) {
             renderScene("adaptive_default.json",
                         {{"technique", css(std::string(R"(, "filter": ")") + filter + "\"")}});
         const double mae = floorShadowMae(ref, img);
-        std::printf("css %s, default scene: floor shadow-region MAE %.4f vs reference N=32\n",
-                    filter, mae);
+        std::printf("css %s, default scene: floor shadow-region MAE %.4f vs exact N=32\n", filter,
+                    mae);
         // The issue's bound. Measured 0.054 (mipmap) and 0.055 (sat) at 192 x 144; the rest is
         // the single blocker depth per pixel (PCSS), wrong where blockers of very different
         // depths share a kernel (the pillar's long shadow).

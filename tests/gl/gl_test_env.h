@@ -20,6 +20,10 @@ namespace penumbra::testing {
 
 const gl::ContextInfo& glInfo();
 
+// The technique block of the ground truth every accuracy test measures against: `exact` with
+// 32 x 32 shadow rays per pixel.
+inline constexpr const char* kGroundTruth = R"({"name": "exact", "samples": 32})";
+
 // Renders frame FRAME of tests/data/gl/NAME (relative to the source tree) with OVERRIDES
 // (-D style) and checks that no GL error was raised; the technique statistics go to STATS
 // when given.

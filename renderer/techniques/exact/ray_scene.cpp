@@ -67,6 +67,7 @@ void RayScene::update(const scene::Scene& s) {
     throwOnError(device_, "scene build");
     transforms_ = std::move(transforms);
     extent_ = triangles_ > 0 ? glm::length(hi - lo) : 0.0f;
+    centre_ = triangles_ > 0 ? 0.5f * (lo + hi) : glm::vec3(0.0f);
 }
 
 void RayScene::occluded8(const glm::vec3& origin, const glm::vec3 dirs[8], const bool active[8],

@@ -29,6 +29,8 @@ public:
     size_t triangles() const { return triangles_; }
     // The world bounding-box diagonal of the casters (0 when there are none).
     float extent() const { return extent_; }
+    // A distance from P beyond which no caster lies (for rays toward the environment).
+    float reach(const glm::vec3& p) const { return glm::length(p - centre_) + extent_ + 1.0f; }
 
 private:
     RTCDevice device_ = nullptr;
@@ -36,6 +38,7 @@ private:
     std::vector<glm::mat4> transforms_;  // of the last build, one per caster object
     size_t triangles_ = 0;
     float extent_ = 0;
+    glm::vec3 centre_{0.0f};
 };
 
 }  // namespace penumbra::techniques::exact
