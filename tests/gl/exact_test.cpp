@@ -4,6 +4,7 @@
 // crosses its horizon, for every technique.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -186,22 +187,28 @@ std::string techniqueJson(std::string_view name) {
     return std::string(R"({"name": ")") + std::string(name) + "\"}";
 }
 
-TEST(ExactGL, LoneSphereBeautyForEveryTechnique) {
-    // A sphere under a light wider than itself: the light crosses the horizon of most of the
-    // sphere's points. The part below is hidden by the sphere itself and left out of E: with
-    // nothing else in the way, beauty on the sphere is albedo/pi L E (horizon-clipped E).
+// The lone sphere (lone_sphere.json): a sphere under a light wider than itself, so the light
+// crosses the horizon of most of its points. The part below is hidden by the sphere itself and
+// left out of E: with nothing else in the way, beauty on the sphere is albedo/pi L E
+// (horizon-clipped E). Renders every technique with OVERRIDES and checks each against exact
+// and that closed form; SELF_SHADOWED lists the techniques whose *visibility* is known wrong
+// there, for which only "the shading adds no error of its own" is asserted.
+void checkLoneSphere(const std::vector<penumbra::scene::Override>& overrides, const char* label,
+                     const std::vector<std::string_view>& self_shadowed) {
     const auto light = firstLight("lone_sphere.json");
     const double lr = light.radiance().r;
-    const Image exact = renderScene("lone_sphere.json", {});
+    const Image exact = renderScene("lone_sphere.json", overrides);
     const auto& id = channel(exact, "id");
     const auto& re = channel(exact, "R");
     double brightest = 0;
     for (size_t i = 0; i < re.size(); ++i)
         if (id[i] == 1) brightest = std::max(brightest, double(re[i]));
     for (const auto& t : penumbra::techniques::allTechniques()) {
-        const Image img = t.name == "exact" ? exact
-                                            : renderScene("lone_sphere.json",
-                                                          {{"technique", techniqueJson(t.name)}});
+        // ssm refuses a scene without occluders (README): nothing to check there.
+        if (t.name == "ssm" && std::string_view(label) == "no caster") continue;
+        auto o = overrides;
+        o.push_back({"technique", techniqueJson(t.name)});
+        const Image img = t.name == "exact" ? exact : renderScene("lone_sphere.json", o);
         const auto& r = channel(img, "R");
         double sum = 0, sum_exact = 0, sum_form = 0, worst = 0;
         long n = 0, off = 0;
@@ -221,15 +228,12 @@ TEST(ExactGL, LoneSphereBeautyForEveryTechnique) {
         ASSERT_GT(n, 2000) << t.name;
         const Errors e = errorsAgainst(exact, img, 1);
         std::printf(
-            "lone sphere, %-9s: mean beauty %+.3f %% against exact, %+.3f %% against "
-            "albedo/pi L E; %ld of %ld pixels over 2 %%, worst %.3f %% of the brightest; "
-            "errors: beauty %.4f, visibility %.4f\n",
-            std::string(t.name).c_str(), 100 * (sum - sum_exact) / sum_exact,
+            "lone sphere (%s), %-9s: mean beauty %+.3f %% against exact, %+.3f %% "
+            "against albedo/pi L E; %ld of %ld pixels over 2 %%, worst %.3f %% of the "
+            "brightest; errors: beauty %.4f, visibility %.4f\n",
+            label, std::string(t.name).c_str(), 100 * (sum - sum_exact) / sum_exact,
             100 * (sum - sum_form) / sum_form, off, n, 100 * worst, e.beauty, e.visibility);
-        if (t.name == "ssm" || t.name == "bitmask" || t.name == "css") {
-            // These three shadow the sphere by its own upper half (their visibility is wrong on
-            // this scene: the conformance and ssm-layers issues). The shading adds no error of
-            // its own: beauty's error stays within visibility's (see cssSlack for css).
+        if (std::find(self_shadowed.begin(), self_shadowed.end(), t.name) != self_shadowed.end()) {
             EXPECT_LE(e.beauty, cssSlack(t.name) * e.visibility) << t.name;
             continue;
         }
@@ -237,6 +241,19 @@ TEST(ExactGL, LoneSphereBeautyForEveryTechnique) {
         EXPECT_LE(std::fabs(sum - sum_form) / sum_form, 0.01) << t.name;
         EXPECT_EQ(off, 0) << t.name;
     }
+}
+
+TEST(ExactGL, LoneSphereWithoutCastersForEveryTechnique) {
+    // The sphere a receiver only: nothing casts, so no technique may darken it.
+    checkLoneSphere({{"objects.1.shadow", "receiver"}}, "no caster", {});
+}
+
+TEST(ExactGL, LoneSphereCastingOnItselfForEveryTechnique) {
+    // The sphere casts too (the default role): its own surface hides the light below each
+    // point's horizon from every light sample, and E has left that part out already. ssm,
+    // bitmask and css shadow the sphere by its own upper half (their visibility is wrong on
+    // this scene: the conformance and ssm-layers issues).
+    checkLoneSphere({}, "casting", {"ssm", "bitmask", "css"});
 }
 
 TEST(ExactGL, EveryTechniquesBeautyErrorIsNoLargerThanItsVisibilityError) {
