@@ -136,6 +136,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
     for (const auto& o : objects_) {
         if (filter == Filter::Casters && !scene::castsShadow(o.shadow)) continue;
         if (filter == Filter::Receivers && !scene::receivesShadow(o.shadow)) continue;
+        if (filter == Filter::ReceiversOnly && o.shadow != scene::ShadowRole::Receiver) continue;
         gl::setUniform(program, "u_model", o.transform);
         gl::setUniform(program, "u_normal_matrix", glm::mat3(glm::inverseTranspose(o.transform)));
         gl::setUniform(program, "u_object_id", o.id);

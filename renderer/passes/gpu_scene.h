@@ -67,7 +67,8 @@ public:
     const Bounds& sceneBounds() const { return scene_bounds_; }
     size_t triangleCount() const;
 
-    enum class Filter { All, Casters, Receivers };
+    // Receivers: role receiver or both; ReceiversOnly: role receiver.
+    enum class Filter { All, Casters, Receivers, ReceiversOnly };
     // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniforms
     // "u_model", "u_normal_matrix", "u_object_id", "u_base_color", "u_has_texture" and binds
     // the base colour texture to unit TEXTURE_UNIT. INSTANCES > 1 draws instanced.

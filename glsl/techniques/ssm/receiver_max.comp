@@ -1,9 +1,11 @@
 #version 450 core
-// `ssm` receiver pyramid: level 0 is the receiver map's linear depth with empty texels as -1;
-// each further level holds the farthest receiver of the texels below it, so a splat quad
-// can find the farthest receiver under it in four fetches.
+// `ssm` receiver pyramid: level 0 is the farthest receiver of every layer at the texel (linear
+// depth, empty as -1); each further level holds the farthest receiver of the texels below it,
+// so a splat quad can find the farthest receiver under it in four fetches.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_source;  // the depth map, or the pyramid itself
+layout(binding = 0) uniform sampler2D u_source;  // the pyramid itself
+layout(binding = 1) uniform sampler2DArray u_layers;  // the receiver layers
+uniform int u_layer_count;
 layout(r32f, binding = 0) uniform writeonly image2D u_target;
 uniform int u_from_depth;    // 1: read the depth map, 0: reduce level u_source_level
 uniform int u_source_level;
@@ -14,8 +16,11 @@ void main() {
     if (any(greaterThanEqual(p, size))) return;
     float d;
     if (u_from_depth == 1) {
-        d = texelFetch(u_source, p, 0).r;
-        if (d >= 1.0) d = -1.0;
+        d = -1.0;
+        for (int k = 0; k < u_layer_count; ++k) {
+            float dk = texelFetch(u_layers, ivec3(p, k), 0).r;
+            if (dk < 1.0) d = max(d, dk);
+        }
     } else {
         // 3 x 3, not 2 x 2: an odd level's last row and column belong to the texels before.
         ivec2 below = textureSize(u_source, u_source_level) - 1;

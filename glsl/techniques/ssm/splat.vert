@@ -25,9 +25,23 @@ uniform vec2 u_occ_texel;    // one texel of it
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
 layout(binding = 2) uniform sampler2D u_receiver_max;
+#endif
 uniform float u_receiver_near;
 uniform float u_receiver_range;
-#endif
+
+uniform int u_layer;  // the receiver layer drawn: micro-patches are counted in layer 0 only
+
+// Self-shadowing (several receiver layers): the object of each occluder texel, and the receiver
+// layers' depths and objects. A patch shadows receivers of its own object only where that
+// object has another light-facing surface beyond it at the patch's place (an ear over a
+// head), never the surface it lies on (a convex object hides only what its horizon does).
+layout(binding = 6) uniform isampler2D u_occ_ids;
+layout(binding = 7) uniform sampler2DArray u_layer_depths;
+layout(binding = 8) uniform isampler2DArray u_layer_ids;
+uniform int u_layer_count;
+uniform float u_depth_bias;
+flat out int v_object;     // the patch's object
+flat out int v_separated;  // 1: it lies apart from its object's next surface beyond it
 
 layout(std430, binding = 3) buffer Counters {
     uint u_micro_patches;
@@ -75,8 +89,24 @@ void main() {
     gl_Position = vec4(mix(ndc.xy, ndc.zw, corner), 0.0, 1.0);
     v_patch = rect * z;
     v_depth = z;
+    v_object = texelFetch(u_occ_ids, texel, 0).r;
+    v_separated = 0;
+    if (u_layer_count > 1) {
+        // The patch's centre on the soft shadow map, and the layers there.
+        vec2 centre = 0.5 * (rect.xy + rect.zw);
+        ivec2 s = clamp(ivec2((centre - u_ssm_lo) / u_ssm_size * float(u_ssm_res)), ivec2(0),
+                        ivec2(u_ssm_res - 1));
+        for (int k = 0; k < u_layer_count; ++k) {
+            float dk = texelFetch(u_layer_depths, ivec3(s, k), 0).r;
+            if (dk >= 1.0) break;
+            float zk = u_receiver_near + dk * u_receiver_range;
+            if (texelFetch(u_layer_ids, ivec3(s, k), 0).r == v_object &&
+                zk - z > u_depth_bias * zk + 2.0 * max(u_occ_texel.x, u_occ_texel.y) * z)
+                v_separated = 1;
+        }
+    }
     if (gl_VertexID == 0) {
-        atomicAdd(u_micro_patches, 1u);
+        if (u_layer == 0) atomicAdd(u_micro_patches, 1u);
         atomicAdd(u_texels_touched, uint((px.z - px.x) * (px.w - px.y) + 0.5));
     }
 }

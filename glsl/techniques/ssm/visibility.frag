@@ -1,28 +1,79 @@
 #version 450 core
 // `ssm` visibility: each camera pixel of a receiver is projected from the light's centre into
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
-// Pixels of objects that receive no shadow are lit. Diagnostic 0: the raw summed occlusion.
+// With several receiver layers, each of the four bilinear texels takes the layer whose receiver
+// depth matches the pixel's; a pixel no layer matches (a surface facing away from the light's
+// centre, or beyond the last layer) sees the light's part above its horizon. Pixels of objects
+// that receive no shadow are lit. Diagnostic 0: the summed occlusion.
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
 #endif
+#include "common/light_horizon.glsl"
+
 in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform isampler2D u_id;
 layout(binding = 2) uniform sampler2D u_receives;  // 1 per object id that receives shadows
-layout(binding = 3) uniform sampler2D u_ssm;
+layout(binding = 3) uniform sampler2DArray u_ssm;  // one layer per receiver layer
 #if TWO_SIDED
-layout(binding = 4) uniform sampler2D u_ssm_back;
+layout(binding = 4) uniform sampler2DArray u_ssm_back;
 #endif
+layout(binding = 5) uniform sampler2DArray u_layers;  // receiver depth per layer, 1 = none
+layout(binding = 6) uniform sampler2D u_normal;
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
 uniform vec3 u_light_up;
 uniform vec3 u_light_forward;
+uniform vec2 u_light_size;
 uniform vec2 u_ssm_lo;
 uniform vec2 u_ssm_size;
-uniform int u_shadowed;  // 0: no occluder lies between the light and a receiver
+uniform int u_shadowed;     // 0: no occluder lies between the light and a receiver
+uniform int u_layer_count;  // receiver layers
+uniform float u_near;       // the soft-shadow window's depth range
+uniform float u_range;
+uniform float u_depth_bias;
 
 layout(location = 0) out vec4 o_visibility;
 layout(location = 1) out vec4 o_occlusion;
+
+float occlusionOf(int layer, ivec2 texel) {
+    float o = texelFetch(u_ssm, ivec3(texel, layer), 0).r;
+#if TWO_SIDED
+    o = max(o, texelFetch(u_ssm_back, ivec3(texel, layer), 0).r);
+#endif
+    return o;
+}
+
+// The bilinear occlusion at UV over the texels whose best-matching layer lies within TOL of
+// the pixel's depth DP; false when no texel matches.
+bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion) {
+    ivec2 res = textureSize(u_ssm, 0).xy;
+    vec2 t = uv * vec2(res) - 0.5;
+    ivec2 base = ivec2(floor(t));
+    vec2 f = t - vec2(base);
+    float sum = 0.0, weights = 0.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            ivec2 q = clamp(base + ivec2(x, y), ivec2(0), res - 1);
+            float w = (x == 1 ? f.x : 1.0 - f.x) * (y == 1 ? f.y : 1.0 - f.y);
+            int best = -1;
+            float best_diff = tol;
+            for (int k = 0; k < u_layer_count; ++k) {
+                float dk = texelFetch(u_layers, ivec3(q, k), 0).r;
+                if (dk >= 1.0) break;  // no deeper layer here
+                float diff = abs(dk - dp);
+                if (diff <= best_diff) {
+                    best_diff = diff;
+                    best = k;
+                }
+            }
+            if (best < 0) continue;
+            sum += w * occlusionOf(best, q);
+            weights += w;
+        }
+    occlusion = weights > 0.0 ? sum / weights : 0.0;
+    return weights > 0.0;
+}
 
 void main() {
     ivec2 pix = ivec2(gl_FragCoord.xy);
@@ -37,10 +88,28 @@ void main() {
     if (z <= 0.0) return;
     vec2 uv = (vec2(dot(d, u_light_right), dot(d, u_light_up)) / z - u_ssm_lo) / u_ssm_size;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return;
-    float occlusion = texture(u_ssm, uv).r;
+    float occlusion;
+    if (u_layer_count == 1) {
+        // The paper: one receiver map, looked up without a depth match.
+        occlusion = texture(u_ssm, vec3(uv, 0.0)).r;
 #if TWO_SIDED
-    occlusion = max(occlusion, texture(u_ssm_back, uv).r);
+        occlusion = max(occlusion, texture(u_ssm_back, vec3(uv, 0.0)).r);
 #endif
+    } else {
+        // Match within 8 soft-map texels of the receiver's slope-free footprint plus the bias.
+        float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
+        float tol = (8.0 * texel + u_depth_bias * z) / u_range;
+        if (!layeredOcclusion(uv, (z - u_near) / u_range, tol, occlusion)) {
+            vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+            vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
+                                                  u_light_size.y * u_light_up);
+            float share = lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
+                                                 u_light_size.y * u_light_up, pos.xyz, n);
+            o_visibility = vec4(share, 0.0, 0.0, 0.0);
+            o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
+            return;
+        }
+    }
     o_visibility = vec4(1.0 - clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
     o_occlusion = vec4(occlusion, 0.0, 0.0, 0.0);
 }

@@ -1,5 +1,7 @@
 // `ssm`: soft shadow maps (Atty et al. 2006). Occluder micro-patches from a light-centred depth
-// map are splatted as penumbra quads into a soft shadow map that the receivers look up.
+// map are splatted as penumbra quads into a soft shadow map that the receivers look up; with
+// `layers` > 1 one soft shadow map per receiver layer peeled from the light's centre (the
+// paper's future work, section 7), so objects that occlude also receive.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -36,6 +38,10 @@ constexpr std::array kSsmParams = {
               "fit each penumbra quad to the farthest receiver under it, and cull it when none"),
     floatParam("depth_bias", 0.002, 0.0, 0.5,
                "a micro-patch shadows a receiver only when nearer by this fraction of its depth"),
+    intParam("layers", 4, 1, 8,
+             "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
+             "the paper: objects of role both occlude only and the receivers are the "
+             "role-receiver objects"),
 };
 
 constexpr unsigned kBindingCounters = 3;  // splat.vert's Counters
@@ -56,24 +62,38 @@ public:
           two_sided_(p.getBool("two_sided")),
           cpu_path_(p.getString("path") == "cpu"),
           clip_(p.getBool("clip")),
-          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))) {}
+          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))),
+          layers_(p.getInt("layers")) {}
+
+    // The receivers: with one layer (the paper) the role-receiver objects only.
+    bool receives(scene::ShadowRole role) const {
+        return layers_ == 1 ? role == scene::ShadowRole::Receiver : scene::receivesShadow(role);
+    }
+    passes::GpuScene::Filter receiverFilter() const {
+        return layers_ == 1 ? passes::GpuScene::Filter::ReceiversOnly
+                            : passes::GpuScene::Filter::Receivers;
+    }
 
     void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override {
         bool occluders = false, receivers = false;
         std::vector<std::uint8_t> receives;
         for (const auto& o : scene.objects()) {
             occluders |= scene::castsShadow(o.shadow);
-            receivers |= scene::receivesShadow(o.shadow);
+            receivers |= this->receives(o.shadow);
             if (static_cast<size_t>(o.id) >= receives.size())
                 receives.resize(static_cast<size_t>(o.id) + 1, 0);
-            receives[static_cast<size_t>(o.id)] = scene::receivesShadow(o.shadow) ? 255 : 0;
+            receives[static_cast<size_t>(o.id)] = this->receives(o.shadow) ? 255 : 0;
         }
         if (!occluders)
             throw InputError(
                 "technique ssm: no occluders: give some object shadow \"occluder\" or \"both\"");
         if (!receivers)
-            throw InputError(
-                "technique ssm: no receivers: give some object shadow \"receiver\" or \"both\"");
+            throw InputError(layers_ == 1
+                                 ? "technique ssm: layers 1 (the paper) receives on objects of "
+                                   "shadow \"receiver\" only and there are none: give some "
+                                   "object shadow \"receiver\", or use layers > 1"
+                                 : "technique ssm: no receivers: give some object shadow "
+                                   "\"receiver\" or \"both\"");
         receives_ = gl::createTexture2D(GL_R8, static_cast<int>(receives.size()), 1,
                                         "ssm receiving objects");
         glTextureSubImage2D(receives_.id(), 0, 0, 0, static_cast<int>(receives.size()), 1, GL_RED,
@@ -81,6 +101,9 @@ public:
 
         depth_program_ = gl::buildProgram(
             "ssm depth", {"techniques/ssm/depth.vert", "techniques/ssm/depth.frag"});
+        peel_program_ = gl::buildProgram("ssm receiver layers",
+                                         {"techniques/ssm/depth.vert", "techniques/ssm/peel.frag"},
+                                         {{"PEEL", "1"}});
         splat_program_ = gl::buildProgram(
             "ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
             {{"CLIP", clip_ ? "1" : "0"}});
@@ -105,11 +128,13 @@ public:
         const GLenum format = fp16_ ? GL_R16F : GL_R32F;
         for (int side = 0; side < (two_sided_ ? 2 : 1); ++side) {
             occluder_maps_.push_back(std::make_unique<DepthTarget>(
-                map_size_, side ? "ssm occluder map (back)" : "ssm occluder map"));
+                map_size_, side ? "ssm occluder map (back)" : "ssm occluder map", true));
             soft_maps_.push_back(std::make_unique<SoftShadowTarget>(
-                ssm_size_, format, side ? "ssm soft shadow map (back)" : "ssm soft shadow map"));
+                ssm_size_, layers_, format,
+                side ? "ssm soft shadow maps (back)" : "ssm soft shadow maps"));
         }
-        receiver_map_ = std::make_unique<DepthTarget>(ssm_size_, "ssm receiver map");
+        receiver_layers_ =
+            std::make_unique<ssm::ReceiverLayers>(ssm_size_, layers_, "ssm receiver layers");
         if (clip_) {
             max_program_ =
                 gl::buildProgram("ssm receiver max", {"techniques/ssm/receiver_max.comp"});
@@ -131,7 +156,7 @@ public:
         const scene::RectLight& light = ctx.currentLight();
         passes::Bounds receiver_bounds;
         for (const auto& o : ctx.gpu.objects())
-            if (scene::receivesShadow(o.shadow)) receiver_bounds.extend(o.world_bounds);
+            if (receives(o.shadow)) receiver_bounds.extend(o.world_bounds);
         const LightWindow occ = ssm::occluderWindow(light, ctx.gpu.casterBounds());
         const LightWindow soft = ssm::softShadowWindow(light, occ, receiver_bounds);
         const bool shadowed = !occ.empty() && !soft.empty();
@@ -146,9 +171,11 @@ public:
                                                          1.0f / (occ.far - occ.near), side == 1);
             });
             ctx.pass("ssm_receiver_map", [&] {
-                receiver_map_->render(ctx.gpu, depth_program_, passes::GpuScene::Filter::Receivers,
-                                      soft.viewProj(light), light, soft.near,
-                                      1.0f / (soft.far - soft.near), false);
+                // Layers at least depth_bias of the farthest receiver's depth apart.
+                const float gap = depth_bias_ * soft.far / (soft.far - soft.near);
+                used_layers_ = receiver_layers_->render(ctx.gpu, peel_program_, receiverFilter(),
+                                                        soft.viewProj(light), light, soft.near,
+                                                        1.0f / (soft.far - soft.near), gap);
                 if (clip_) buildReceiverMax();
             });
             const std::uint32_t zero[2] = {0, 0};
@@ -178,6 +205,8 @@ public:
         ctx.stats["micro_patches"] = patches;
         ctx.stats["texels_touched"] = touched;
         ctx.stats["fill_per_micro_patch"] = patches > 0 ? touched / patches : 0.0;
+        ctx.stats["receiver_layers"] =
+            std::max(ctx.stats.value("receiver_layers", 0), shadowed ? used_layers_ : 0);
     }
 
     std::vector<DiagnosticChannel> diagnostics() const override {
@@ -190,7 +219,9 @@ private:
         glUseProgram(max_program_.id());
         for (int level = 0; level < receiver_levels_; ++level) {
             const int size = std::max(ssm_size_ >> level, 1);
-            glBindTextureUnit(0, level == 0 ? receiver_map_->depth.id() : receiver_max_.id());
+            glBindTextureUnit(0, receiver_max_.id());
+            glBindTextureUnit(1, receiver_layers_->depth.id());
+            gl::setUniform(max_program_, "u_layer_count", layers_);
             glBindImageTexture(0, receiver_max_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
             gl::setUniform(max_program_, "u_from_depth", level == 0 ? 1 : 0);
             gl::setUniform(max_program_, "u_source_level", level - 1);
@@ -224,10 +255,9 @@ private:
     void splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
                int side) {
         const SoftShadowTarget& target = *soft_maps_[size_t(side)];
-        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
-        glViewport(0, 0, ssm_size_, ssm_size_);
         const float zero[4] = {0, 0, 0, 0};
-        glClearNamedFramebufferfv(target.fbo.id(), GL_COLOR, 0, zero);
+        for (const auto& fbo : target.fbos) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+        glViewport(0, 0, ssm_size_, ssm_size_);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_CULL_FACE);
         glEnable(GL_BLEND);
@@ -235,8 +265,12 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         const auto& p = splat_program_;
         glUseProgram(p.id());
-        glBindTextureUnit(1, receiver_map_->depth.id());
+        glBindTextureUnit(1, receiver_layers_->depth.id());
         if (clip_) glBindTextureUnit(2, receiver_max_.id());
+        glBindTextureUnit(6, occluder_maps_[size_t(side)]->ids.id());
+        glBindTextureUnit(7, receiver_layers_->depth.id());
+        glBindTextureUnit(8, receiver_layers_->ids.id());
+        gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCounters, counters_.id());
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
@@ -251,16 +285,22 @@ private:
         gl::setUniform(p, "u_occ_lo", occ.lo);
         gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
         glBindVertexArray(empty_vao_.id());
-        if (cpu_path_) {
-            // patches_buffer_ is bound at kBindingPatches by the readback pass.
-            if (!patches_.empty())
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
-        } else {
+        if (!cpu_path_)
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPatches,
                              gpu_patches_[size_t(side)].id());
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
-            glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        // The same micro-patches into each receiver layer's soft shadow map (layered SSM).
+        for (int layer = 0; layer < used_layers_; ++layer) {
+            glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
+            gl::setUniform(p, "u_layer", layer);
+            if (cpu_path_) {
+                // patches_buffer_ is bound at kBindingPatches by the readback pass.
+                if (!patches_.empty())
+                    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
+            } else {
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+                glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+            }
         }
         glBindVertexArray(0);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -285,7 +325,14 @@ private:
         glBindTextureUnit(2, receives_.id());
         glBindTextureUnit(3, soft_maps_[0]->occlusion.id());
         if (two_sided_) glBindTextureUnit(4, soft_maps_[1]->occlusion.id());
+        glBindTextureUnit(5, receiver_layers_->depth.id());
+        glBindTextureUnit(6, ctx.gbuffer.normal().id());
         passes::setLightFrameUniforms(p, light);
+        gl::setUniform(p, "u_light_size", light.size);
+        gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+        gl::setUniform(p, "u_near", soft.near);
+        gl::setUniform(p, "u_range", soft.far - soft.near);
+        gl::setUniform(p, "u_depth_bias", depth_bias_);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
         gl::setUniform(p, "u_ssm_size", soft.size);
         gl::setUniform(p, "u_shadowed", shadowed ? 1 : 0);
@@ -296,12 +343,15 @@ private:
     int map_size_, ssm_size_;
     bool fp16_, two_sided_, cpu_path_, clip_;
     float depth_bias_;
+    int layers_;
+    int used_layers_ = 0;  // receiver layers holding a receiver this frame
+    gl::Program peel_program_;
     gl::Program depth_program_, splat_program_, visibility_program_, max_program_, compact_program_;
     gl::Texture receiver_max_;
     int receiver_levels_ = 1;
     std::vector<std::unique_ptr<DepthTarget>> occluder_maps_;
     std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
-    std::unique_ptr<DepthTarget> receiver_map_;
+    std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
     gl::Texture receives_;
     gl::Buffer counters_;
     gl::Buffer command_;                   // path=gpu: the splat's indirect draw

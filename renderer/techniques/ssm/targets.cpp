@@ -7,12 +7,16 @@
 
 namespace penumbra::techniques::ssm {
 
-DepthTarget::DepthTarget(int size_, const char* label)
+DepthTarget::DepthTarget(int size_, const char* label, bool with_ids)
     : size(size_),
       depth(gl::createTexture2D(GL_DEPTH_COMPONENT32F, size_, size_, label)),
       fbo(gl::createFramebuffer(label)) {
     glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-    glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
+    if (with_ids) {
+        ids = gl::createTexture2D(GL_R32I, size_, size_, label);
+        glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, ids.id(), 0);
+    }
+    glNamedFramebufferDrawBuffer(fbo.id(), with_ids ? GL_COLOR_ATTACHMENT0 : GL_NONE);
     glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
     if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
@@ -31,6 +35,10 @@ void DepthTarget::render(const passes::GpuScene& scene, const gl::Program& progr
     glDisable(GL_CULL_FACE);
     const float clear = farthest ? 0.0f : 1.0f;
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clear);
+    if (ids) {
+        const GLint none = -1;
+        glClearNamedFramebufferiv(fbo.id(), GL_COLOR, 0, &none);
+    }
     glUseProgram(program.id());
     gl::setUniform(program, "u_view_proj", view_proj);
     gl::setUniform(program, "u_light_centre", light.position);
@@ -44,13 +52,65 @@ void DepthTarget::render(const passes::GpuScene& scene, const gl::Program& progr
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-SoftShadowTarget::SoftShadowTarget(int size, GLenum format, const char* label)
-    : occlusion(gl::createTexture2D(format, size, size, label)), fbo(gl::createFramebuffer(label)) {
+ReceiverLayers::ReceiverLayers(int size_, int layers_, const char* label)
+    : size(size_),
+      layers(layers_),
+      depth(gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, size_, size_, layers_, label)),
+      ids(gl::createTexture2DArray(GL_R32I, size_, size_, layers_, label)),
+      scratch(size_, label, true) {}
+
+int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& program,
+                           passes::GpuScene::Filter filter, const glm::mat4& view_proj,
+                           const scene::RectLight& light, float near, float inv_range,
+                           float gap) const {
+    glUseProgram(program.id());
+    gl::setUniform(program, "u_peel_gap", gap);
+    // Each layer is drawn into the scratch map, reading the layer before from the array, and
+    // then copied into the array: a layer is never sampled while it is drawn.
+    glBindTextureUnit(5, depth.id());
+    const gl::Query any = gl::createQuery(GL_ANY_SAMPLES_PASSED, "ssm receiver layer");
+    int used = 0;
+    for (int k = 0; k < layers; ++k) {
+        glUseProgram(program.id());
+        gl::setUniform(program, "u_layer", k);
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, any.id());
+        scratch.render(scene, program, filter, view_proj, light, near, inv_range, false);
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        glCopyImageSubData(scratch.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth.id(),
+                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);
+        glCopyImageSubData(scratch.ids.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ids.id(),
+                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);
+        GLuint passed = 0;
+        glGetQueryObjectuiv(any.id(), GL_QUERY_RESULT, &passed);
+        if (!passed) {
+            // Empty from here on: the deeper layers keep "none" (1) for the lookups.
+            const float none = 1.0f;
+            const GLint no_id = -1;
+            if (k + 1 < layers) {
+                glClearTexSubImage(depth.id(), 0, 0, 0, k + 1, size, size, layers - k - 1,
+                                   GL_DEPTH_COMPONENT, GL_FLOAT, &none);
+                glClearTexSubImage(ids.id(), 0, 0, 0, k + 1, size, size, layers - k - 1,
+                                   GL_RED_INTEGER, GL_INT, &no_id);
+            }
+            break;
+        }
+        used = k + 1;
+    }
+    return used;
+}
+
+SoftShadowTarget::SoftShadowTarget(int size, int layers, GLenum format, const char* label)
+    : occlusion(gl::createTexture2DArray(format, size, size, layers, label)) {
     glTextureParameteri(occlusion.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(occlusion.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, occlusion.id(), 0);
-    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+    for (int k = 0; k < layers; ++k) {
+        fbos.push_back(gl::createFramebuffer(label));
+        glNamedFramebufferTextureLayer(fbos.back().id(), GL_COLOR_ATTACHMENT0, occlusion.id(), 0,
+                                       k);
+        if (glCheckNamedFramebufferStatus(fbos.back().id(), GL_FRAMEBUFFER) !=
+            GL_FRAMEBUFFER_COMPLETE)
+            throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+    }
 }
 
 }  // namespace penumbra::techniques::ssm

@@ -1,6 +1,9 @@
-// The render targets of `ssm`: linear-depth maps (occluder and receiver maps) and soft shadow
-// maps (summed micro-patch occlusion, blended additively at FP32 or FP16).
+// The render targets of `ssm`: linear-depth maps (occluder map, layered receiver maps peeled
+// from the light's centre) and soft shadow maps (summed micro-patch occlusion per receiver
+// layer, blended additively at FP32 or FP16).
 #pragma once
+
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -10,12 +13,14 @@
 
 namespace penumbra::techniques::ssm {
 
-// A depth-only target of SIZE^2 texels (linear depth written by depth.frag).
+// A depth target of SIZE^2 texels (linear depth written by depth.frag), with WITH_IDS also the
+// object id of the surface at each texel (R32I, -1 where none).
 struct DepthTarget {
     int size;
     gl::Texture depth;
+    gl::Texture ids;  // WITH_IDS only
     gl::Framebuffer fbo;
-    DepthTarget(int size, const char* label);
+    DepthTarget(int size, const char* label, bool with_ids = false);
 
     // Renders the objects FILTER selects through VIEW_PROJ with PROGRAM (techniques/ssm/depth.*),
     // storing (distance along LIGHT's forward axis - NEAR) * INV_RANGE: the nearest surface, or
@@ -25,12 +30,30 @@ struct DepthTarget {
                 const scene::RectLight& light, float near, float inv_range, bool farthest) const;
 };
 
-// A soft shadow map of SIZE^2 texels in FORMAT (GL_R32F or GL_R16F), filtered bilinearly when
-// projected onto the receivers.
+// LAYERS receiver depth maps of SIZE^2 texels from the light's centre (a DEPTH32F array):
+// layer 0 the nearest light-facing receiver surface, layer k the nearest one beyond layer k - 1
+// (depth peeling), 1 where a layer has none.
+struct ReceiverLayers {
+    int size, layers;
+    gl::Texture depth;  // 2D array, LAYERS layers
+    gl::Texture ids;    // 2D array of the surfaces' object ids (R32I, -1 = none)
+    DepthTarget scratch;
+    ReceiverLayers(int size, int layers, const char* label);
+
+    // Peels the objects FILTER selects through VIEW_PROJ with PROGRAM (techniques/ssm/depth.vert
+    // with PEEL, peel.frag), each layer at least GAP (normalised depth) beyond the one before.
+    // Stops at the first empty layer; returns the layers that hold a receiver.
+    int render(const passes::GpuScene& scene, const gl::Program& program,
+               passes::GpuScene::Filter filter, const glm::mat4& view_proj,
+               const scene::RectLight& light, float near, float inv_range, float gap) const;
+};
+
+// Soft shadow maps of SIZE^2 texels in FORMAT (GL_R32F or GL_R16F), one per receiver layer (a
+// 2D array), filtered bilinearly when projected onto the receivers.
 struct SoftShadowTarget {
     gl::Texture occlusion;
-    gl::Framebuffer fbo;
-    SoftShadowTarget(int size, GLenum format, const char* label);
+    std::vector<gl::Framebuffer> fbos;  // one per layer
+    SoftShadowTarget(int size, int layers, GLenum format, const char* label);
 };
 
 }  // namespace penumbra::techniques::ssm

@@ -1,0 +1,24 @@
+#version 450 core
+// `ssm` receiver layers (depth peeling from the light's centre): keeps the receiver surfaces
+// that face the light's centre, and in layer k > 0 only those at least u_peel_gap (normalised
+// depth) beyond layer k - 1 at the same texel.
+in float v_depth;
+in vec3 v_world;
+in vec3 v_normal;
+layout(binding = 5) uniform sampler2DArray u_previous;  // the layers peeled so far
+uniform int u_layer;
+uniform float u_peel_gap;
+uniform vec3 u_light_centre;
+uniform int u_object_id;
+layout(location = 0) out int o_id;
+
+void main() {
+    if (dot(v_normal, u_light_centre - v_world) <= 0.0) discard;  // faces away from the light
+    float d = clamp(v_depth, 0.0, 1.0);
+    if (u_layer > 0) {
+        float before = texelFetch(u_previous, ivec3(ivec2(gl_FragCoord.xy), u_layer - 1), 0).r;
+        if (before >= 1.0 || d <= before + u_peel_gap) discard;
+    }
+    gl_FragDepth = d;
+    o_id = u_object_id;
+}
