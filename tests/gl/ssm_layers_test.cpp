@@ -121,3 +121,71 @@ TEST(SsmLayersGL, LayersAreCountedAndBounded) {
     EXPECT_GE(used, 2);
     EXPECT_LE(used, 8);
 }
+
+TEST(SsmLayersGL, FloorUmbraUnderABothObject) {
+    // both_box.json: a box of role both floating over the floor under a small light.
+    const Image exact =
+        renderScene("both_box.json", {{"technique", penumbra::testing::kGroundTruth}});
+    const Image img = renderScene("both_box.json", {});
+    const auto& ve = channel(exact, "visibility");
+    const auto& v = channel(img, "visibility");
+    const auto& id = channel(exact, "id");
+    double sum = 0, sum_exact = 0;
+    long n = 0;
+    for (size_t i = 0; i < v.size(); ++i)
+        if (id[i] == 0 && ve[i] < 0.02f) sum += v[i], sum_exact += ve[i], ++n;
+    ASSERT_GT(n, 300) << "the scene must have an umbra on the floor";
+    std::printf(
+        "ssm, floor umbra under a both box: mean visibility %.4f (exact %.4f) over %ld "
+        "px\n",
+        sum / n, sum_exact / n, n);
+    EXPECT_LE(std::fabs(sum - sum_exact) / n, 0.05);  // the issue's bound
+}
+
+TEST(SsmLayersGL, LayersWorkWithEveryVariant) {
+    // two_sided, path cpu, clip off and fp16, each with 4 layers against itself with 1: the
+    // floor (a receiver either way) must keep its shadow under the box, which 4 layers also
+    // make a receiver.
+    for (const char* extra : {R"(, "two_sided": true)", R"(, "path": "cpu")", R"(, "clip": false)",
+                              R"(, "precision": "fp16")"}) {
+        auto with = [&](int layers) {
+            return renderScene("both_box.json",
+                               {{"technique", std::string(R"({"name": "ssm", "map_size": 128, )"
+                                                          R"("ssm_size": 128, "layers": )") +
+                                                  std::to_string(layers) + extra + "}"}});
+        };
+        const Image four = with(4);
+        const double mae = penumbra::testing::floorShadowMae(with(1), four, 100);
+        // The box receives in layer 0 where it faces the light (its top): ssm.layer says so.
+        const auto& layer = channel(four, "ssm.layer");
+        const auto& id = channel(four, "id");
+        const auto& ny = channel(four, "N.Y");
+        long top = 0, in_layer0 = 0;
+        for (size_t i = 0; i < id.size(); ++i)
+            if (id[i] == 1 && ny[i] > 0.99f) ++top, in_layer0 += layer[i] == 0.0f;
+        std::printf(
+            "ssm%s: floor shadow MAE of layers 4 against layers 1: %.5f; box top in "
+            "layer 0: %ld of %ld px\n",
+            extra, mae, in_layer0, top);
+        // 0.005: the split's bound below; the floor's texels are the same in both.
+        EXPECT_LE(mae, 0.005) << extra;
+        EXPECT_GT(top, 200) << extra;
+        EXPECT_GE(in_layer0, top * 95 / 100) << extra;
+    }
+}
+
+TEST(SsmLayersGL, OccluderReceiverSplitIsUnchangedByLayers) {
+    // closed_form.json has the split (occluder over a receiver floor): layers must not move it.
+    // A 128 occluder map and a 64 soft shadow map (as SsmGL's tests): the splat's fill grows
+    // with both, and the question here is only whether layers move the image.
+    auto with = [](int layers) {
+        return renderScene("closed_form.json",
+                           {{"technique", R"({"name": "ssm", "map_size": 128, "ssm_size": 64, )"
+                                          R"("layers": )" +
+                                              std::to_string(layers) + "}"}});
+    };
+    const Image one = with(1), four = with(4);
+    const double mae = penumbra::testing::floorShadowMae(one, four, 100);
+    std::printf("ssm, closed form: layers 4 against layers 1: floor shadow MAE %.5f\n", mae);
+    EXPECT_LE(mae, 0.005);  // the issue's bound
+}

@@ -4,7 +4,8 @@
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
 // depth matches the pixel's; a pixel no layer matches (a surface facing away from the light's
 // centre, or beyond the last layer) sees the light's part above its horizon. Pixels of objects
-// that receive no shadow are lit. Diagnostic 0: the summed occlusion.
+// that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
+// used (of the texel weighing most; -1 where none).
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
 #endif
@@ -35,6 +36,7 @@ uniform float u_depth_bias;
 
 layout(location = 0) out vec4 o_visibility;
 layout(location = 1) out vec4 o_occlusion;
+layout(location = 2) out vec4 o_layer;
 
 float occlusionOf(int layer, ivec2 texel) {
     float o = texelFetch(u_ssm, ivec3(texel, layer), 0).r;
@@ -45,13 +47,14 @@ float occlusionOf(int layer, ivec2 texel) {
 }
 
 // The bilinear occlusion at UV over the texels whose best-matching layer lies within TOL of
-// the pixel's depth DP; false when no texel matches.
-bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion) {
+// the pixel's depth DP; false when no texel matches. LAYER: the layer of the heaviest texel.
+bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion, out int layer) {
     ivec2 res = textureSize(u_ssm, 0).xy;
     vec2 t = uv * vec2(res) - 0.5;
     ivec2 base = ivec2(floor(t));
     vec2 f = t - vec2(base);
-    float sum = 0.0, weights = 0.0;
+    float sum = 0.0, weights = 0.0, heaviest = 0.0;
+    layer = -1;
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) {
             ivec2 q = clamp(base + ivec2(x, y), ivec2(0), res - 1);
@@ -70,6 +73,10 @@ bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion) {
             if (best < 0) continue;
             sum += w * occlusionOf(best, q);
             weights += w;
+            if (w >= heaviest) {
+                heaviest = w;
+                layer = best;
+            }
         }
     occlusion = weights > 0.0 ? sum / weights : 0.0;
     return weights > 0.0;
@@ -81,6 +88,7 @@ void main() {
     if (pos.w == 0.0) discard;
     o_visibility = vec4(1.0, 0.0, 0.0, 0.0);
     o_occlusion = vec4(0.0);
+    o_layer = vec4(-1.0, 0.0, 0.0, 0.0);
     int id = texelFetch(u_id, pix, 0).r;
     if (u_shadowed == 0 || id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) return;
     vec3 d = pos.xyz - u_light_centre;
@@ -89,6 +97,7 @@ void main() {
     vec2 uv = (vec2(dot(d, u_light_right), dot(d, u_light_up)) / z - u_ssm_lo) / u_ssm_size;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return;
     float occlusion;
+    int layer = 0;
     if (u_layer_count == 1) {
         // The paper: one receiver map, looked up without a depth match.
         occlusion = texture(u_ssm, vec3(uv, 0.0)).r;
@@ -99,7 +108,7 @@ void main() {
         // Match within 8 soft-map texels of the receiver's slope-free footprint plus the bias.
         float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
-        if (!layeredOcclusion(uv, (z - u_near) / u_range, tol, occlusion)) {
+        if (!layeredOcclusion(uv, (z - u_near) / u_range, tol, occlusion, layer)) {
             vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
             vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
                                                   u_light_size.y * u_light_up);
@@ -112,4 +121,5 @@ void main() {
     }
     o_visibility = vec4(1.0 - clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
     o_occlusion = vec4(occlusion, 0.0, 0.0, 0.0);
+    o_layer = vec4(float(layer), 0.0, 0.0, 0.0);
 }

@@ -210,7 +210,8 @@ public:
     }
 
     std::vector<DiagnosticChannel> diagnostics() const override {
-        return {{"occlusion", DiagnosticChannel::Combine::Max}};
+        return {{"occlusion", DiagnosticChannel::Combine::Max},
+                {"layer", DiagnosticChannel::Combine::Max}};
     }
 
 private:
@@ -314,8 +315,10 @@ private:
                     const LightWindow& soft, bool shadowed) {
         ctx.bindOutput();
         const float zero[4] = {0, 0, 0, 0};
+        const float none[4] = {-1, 0, 0, 0};
         glClearBufferfv(GL_COLOR, 0, zero);
         glClearBufferfv(GL_COLOR, 1, zero);
+        glClearBufferfv(GL_COLOR, 2, none);
         glDisable(GL_BLEND);
         glDisable(GL_DEPTH_TEST);
         const auto& p = visibility_program_;
