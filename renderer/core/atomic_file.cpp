@@ -1,6 +1,7 @@
 // Atomic writes: see atomic_file.h.
 #include "renderer/core/atomic_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,7 +14,65 @@
 namespace penumbra {
 namespace {
 constexpr const char* kOnlyRegular = " (an output replaces only a regular file)";
+thread_local AtomicGroup* current_group = nullptr;
+
+void renameIntoPlace(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        const std::string why = ec.message();  // before remove() overwrites EC
+        std::filesystem::remove(tmp, ec);
+        throw RuntimeError(path.string() + ": cannot rename into place: " + why);
+    }
+}
+
+// True when process PID is gone, or was started after TIME (its PID was reused since).
+bool writerIsGone(long pid, std::filesystem::file_time_type time) {
+    if (pid <= 0 || pid == ::getpid()) return pid <= 0;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) return true;
+    std::error_code ec;
+    const auto started = std::filesystem::last_write_time("/proc/" + std::to_string(pid), ec);
+    return !ec && started > time;
+}
 }  // namespace
+
+AtomicGroup::AtomicGroup() : outer_(current_group) { current_group = this; }
+
+AtomicGroup::~AtomicGroup() {
+    current_group = outer_;
+    std::error_code ec;
+    for (const auto& [tmp, path] : pending_) std::filesystem::remove(tmp, ec);
+}
+
+void AtomicGroup::commit() {
+    for (size_t i = 0; i < pending_.size(); ++i) {
+        renameIntoPlace(pending_[i].first, pending_[i].second);
+        pending_[i].first.clear();
+    }
+    pending_.clear();
+}
+
+int removeStaleTemporaries(const std::filesystem::path& path) {
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+    std::string prefix = ".";  // built in steps: GCC 12 warns falsely on "." + string + "."
+    prefix += path.filename().string();
+    prefix += '.';
+    std::error_code ec;
+    int removed = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() <= prefix.size() + 4 || name.rfind(prefix, 0) != 0 ||
+            !name.ends_with(".tmp") || !entry.is_regular_file(ec))
+            continue;
+        const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
+            continue;
+        if (writerIsGone(std::stol(digits), entry.last_write_time(ec)) &&
+            std::filesystem::remove(entry.path(), ec))
+            ++removed;
+    }
+    return removed;
+}
 
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
     std::filesystem::path dir = path.parent_path();
@@ -47,12 +106,11 @@ void writeAtomically(const std::filesystem::path& path,
         std::filesystem::remove(tmp, ec);
         throw RuntimeError(path.string() + ": write failed: " + e.what());
     }
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        const std::string why = ec.message();  // before remove() overwrites EC
-        std::filesystem::remove(tmp, ec);
-        throw RuntimeError(path.string() + ": cannot rename into place: " + why);
+    if (current_group) {
+        current_group->pending_.emplace_back(tmp, path);
+        return;
     }
+    renameIntoPlace(tmp, path);
 }
 
 void checkOutputPath(const std::filesystem::path& path, const std::string& label) {
