@@ -6,7 +6,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <chrono>
 #include <fstream>
+#include <sstream>
 
 #include "renderer/core/error.h"
 #include "renderer/core/regular_file.h"
@@ -26,13 +28,34 @@ void renameIntoPlace(const std::filesystem::path& tmp, const std::filesystem::pa
     }
 }
 
+// When process PID started, in seconds since the epoch (/proc/PID/stat field 22 and the boot
+// time of /proc/stat), or -1 when unknown.
+double processStart(long pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text;
+    std::getline(stat, text);
+    const size_t paren = text.rfind(')');  // the command name may hold spaces
+    if (paren == std::string::npos) return -1;
+    std::istringstream fields(text.substr(paren + 2));
+    std::string field;
+    for (int i = 3; i <= 22 && fields >> field; ++i) {}
+    std::ifstream boot("/proc/stat");
+    std::string key;
+    double btime = -1;
+    while (boot >> key)
+        if (key == "btime" && boot >> btime) break;
+    if (btime < 0 || field.empty()) return -1;
+    return btime + std::stod(field) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+}
+
 // True when process PID is gone, or was started after TIME (its PID was reused since).
 bool writerIsGone(long pid, std::filesystem::file_time_type time) {
     if (pid <= 0 || pid == ::getpid()) return pid <= 0;
     if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) return true;
-    std::error_code ec;
-    const auto started = std::filesystem::last_write_time("/proc/" + std::to_string(pid), ec);
-    return !ec && started > time;
+    const double started = processStart(pid);
+    const auto written = std::chrono::file_clock::to_sys(time).time_since_epoch();
+    // A second of slack: the boot time and the start ticks are coarse.
+    return started > 0 && started > std::chrono::duration<double>(written).count() + 1.0;
 }
 }  // namespace
 
