@@ -1,14 +1,23 @@
 // Hand-written argument cursor: see args.h.
 #include "cli/args.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
+#include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
 
 namespace penumbra::cli {
 
+void ArgCursor::noteName(std::string_view short_name, std::string_view long_name) {
+    for (std::string_view n : {short_name, long_name})
+        if (!n.empty() && std::find(names_.begin(), names_.end(), n) == names_.end())
+            names_.emplace_back(n);
+}
+
 bool ArgCursor::flag(std::string_view short_name, std::string_view long_name) {
+    noteName(short_name, long_name);
     if (done()) return false;
     const std::string& a = args_[index_];
     if ((!short_name.empty() && a == short_name) || a == long_name) {
@@ -23,12 +32,19 @@ bool ArgCursor::flag(std::string_view short_name, std::string_view long_name) {
 
 std::optional<std::string> ArgCursor::option(std::string_view short_name,
                                              std::string_view long_name) {
+    noteName(short_name, long_name);
     if (done()) return std::nullopt;
     const std::string& a = args_[index_];
     if ((!short_name.empty() && a == short_name) || a == long_name) {
         if (index_ + 1 >= args_.size()) fail(a + " needs a value");
         index_ += 2;
         return args_[index_ - 1];
+    }
+    // "-f1-3": a one-letter option with its value attached.
+    if (short_name.size() == 2 && a.size() > 2 && a[1] != '-' &&
+        a.compare(0, short_name.size(), short_name) == 0) {
+        ++index_;
+        return a.substr(short_name.size());
     }
     if (a.size() > long_name.size() && a.compare(0, long_name.size(), long_name) == 0 &&
         a[long_name.size()] == '=') {
@@ -48,7 +64,13 @@ std::optional<std::string> ArgCursor::positional() {
 
 void ArgCursor::unknown() const {
     const std::string& a = args_[index_];
-    if (a.size() > 1 && a[0] == '-') fail("unknown flag '" + a + "' (see --help)");
+    if (a == kListFlagsArgument) throw KnownFlags{names_};
+    if (a.size() > 1 && a[0] == '-') {
+        const std::string typed = a.substr(0, a.find('='));
+        const std::string near = nearestName(typed, names_);
+        fail("unknown flag '" + a + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
+             "see --help)");
+    }
     fail("unexpected argument '" + a + "' (see --help)");
 }
 

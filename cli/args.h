@@ -9,6 +9,13 @@
 
 namespace penumbra::cli {
 
+// An argument no parser accepts: unknown() throws KnownFlags with every flag asked for before
+// it, which is how completion and the man page learn each command's flags from its parser.
+inline constexpr std::string_view kListFlagsArgument = "--penumbra-list-flags";
+struct KnownFlags {
+    std::vector<std::string> names;
+};
+
 class ArgCursor {
 public:
     // COMMAND prefixes messages ("penumbra render: ...").
@@ -30,9 +37,13 @@ public:
     [[noreturn]] void fail(const std::string& message) const;
 
 private:
+    // Remembers a flag name the parser asked for, so that unknown() can suggest the nearest.
+    void noteName(std::string_view short_name, std::string_view long_name);
+
     std::string command_;
     std::vector<std::string> args_;
     size_t index_ = 0;
+    std::vector<std::string> names_;  // every flag asked for so far
 };
 
 // Typed values; errors name FLAG ("penumbra compare: --fail: expected a number, got 'x'").

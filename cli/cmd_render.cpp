@@ -19,12 +19,13 @@ options:
   -t, --technique NAME   a technique of `penumbra techniques`; overrides technique.name
   -D, --set KEY=VALUE    override a scene value by dotted path (repeatable); VALUE is JSON,
                          a bare word is a string: -D technique.samples=8 -D lights.0.size=[1,1]
-  -o, --output PATTERN   EXR path; a run of # is the zero-padded frame number
-                         (default out/<scene name>.####.exr)
+  -o, --output PATTERN   EXR path (.exr); a run of # is the zero-padded frame number, needed
+                         with several frames or --frame-from-env (default
+                         out/<scene name>.####.exr)
       --timings PATTERN  timing JSON path (default: the EXR path with .json)
-      --preview PATTERN  also write a tone-mapped PNG
-  -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2 (default: the scene's animation
-                         range, else frame 0)
+      --preview PATTERN  also write a tone-mapped PNG (.png)
+  -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2, frames 0 or more; -f1-3 works too
+                         (default: the scene's animation range, else frame 0)
       --frame-from-env VAR  render the one frame named by environment variable VAR (a farm's
                          task index, e.g. SLURM_ARRAY_TASK_ID), plus --frame-offset K
       --frame-offset K   added to --frame-from-env's value (default 0)
@@ -33,12 +34,15 @@ options:
       --backend B        auto (default), egl (device, then surfaceless), egl-device,
                          egl-surfaceless, osmesa
       --device N         EGL device index (see `penumbra info`)
-      --skip-existing    skip frames whose EXR already exists
+      --skip-existing    skip frames whose files (EXR, JSON, preview) all exist already
+      --strict           a frame outside the scene's animation range is an error, not a
+                         warning
       --warmup N         render each frame N extra times first, untimed
       --repeat N         time N renders per frame; the JSON gets min/median/max per pass
       --quiet            no progress or messages except errors
       --gl-debug         print every KHR_debug message
   -h, --help             this help
+      --version          print the version
 
 exit codes: 0 all frames written, 1 a frame failed at run time, 2 bad command line or input,
 3 no usable OpenGL backend.
@@ -53,6 +57,9 @@ std::string frameFromEnvironment(const ArgCursor& c, const std::string& var, lon
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), frame);
     if (text.empty() || ec != std::errc() || ptr != text.data() + text.size())
         c.fail("--frame-from-env: " + var + "='" + text + "' is not a whole number");
+    if (frame + offset < 0)
+        c.fail("--frame-from-env: " + var + "=" + text + (offset ? " with --frame-offset " + std::to_string(offset) : "") +
+               " gives frame " + std::to_string(frame + offset) + " (frames are 0 or more)");
     return std::to_string(frame + offset);
 }
 
@@ -91,6 +98,8 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
         req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
     } else if (c.flag("", "--skip-existing")) {
         req.skip_existing = true;
+    } else if (c.flag("", "--strict")) {
+        req.strict = true;
     } else if (c.flag("-q", "--quiet")) {
         req.quiet = true;
     } else {
@@ -133,6 +142,8 @@ int runRender(const Args& args) {
     if (frame_env) {
         if (req.frames) c.fail("--frame-from-env: not with --frames");
         req.frames = frameFromEnvironment(c, *frame_env, frame_offset.value_or(0));
+        req.frames_flag = "--frame-from-env";
+        req.farm_task = true;
     }
     req.scene = *scene;
     return render::runRenderJob(req);

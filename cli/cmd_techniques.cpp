@@ -1,10 +1,13 @@
 // `penumbra techniques [NAME] [--json]`: every technique and every parameter (key, type,
 // default, range, meaning), straight from the parameter tables.
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <iostream>
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "renderer/render/render_job.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::cli {
@@ -38,6 +41,26 @@ std::string rangeText(const ParamSpec& s) {
     return out;
 }
 
+// One row per parameter, every column as wide as its widest cell (long defaults stay aligned).
+void printParamTable(std::span<const ParamSpec> params) {
+    std::vector<std::array<std::string, 5>> rows;
+    std::array<size_t, 4> width{};
+    for (const auto& s : params) {
+        rows.push_back({std::string(s.key), std::string(paramTypeName(s.type)),
+                        "default " + paramDefault(s).dump(), rangeText(s), std::string(s.doc)});
+        for (size_t i = 0; i < width.size(); ++i) width[i] = std::max(width[i], rows.back()[i].size());
+    }
+    for (const auto& r : rows) {
+        std::string line = " ";
+        for (size_t i = 0; i < width.size(); ++i) {
+            line += ' ';
+            line += r[i];
+            line.append(width[i] - r[i].size(), ' ');
+        }
+        std::printf("%s %s\n", line.c_str(), r[4].c_str());
+    }
+}
+
 }  // namespace
 
 int runTechniques(const Args& args) {
@@ -61,12 +84,7 @@ int runTechniques(const Args& args) {
     std::vector<const techniques::TechniqueInfo*> list;
     for (const auto& t : techniques::allTechniques())
         if (!name || t.name == *name) list.push_back(&t);
-    if (list.empty()) {
-        std::string known;
-        for (const auto& t : techniques::allTechniques())
-            known += (known.empty() ? "" : ", ") + std::string(t.name);
-        c.fail("unknown technique '" + *name + "' (known: " + known + ")");
-    }
+    if (list.empty()) c.fail(render::unknownTechniqueMessage(*name));
     if (json) {
         nlohmann::json out = nlohmann::json::array();
         for (const auto* t : list) {
@@ -79,10 +97,7 @@ int runTechniques(const Args& args) {
     }
     for (const auto* t : list) {
         std::printf("%s: %s\n", std::string(t->name).c_str(), std::string(t->summary).c_str());
-        for (const auto& s : t->params)
-            std::printf("  %-16s %-6s default %-8s %-22s %s\n", std::string(s.key).c_str(),
-                        std::string(paramTypeName(s.type)).c_str(), paramDefault(s).dump().c_str(),
-                        rangeText(s).c_str(), std::string(s.doc).c_str());
+        printParamTable(t->params);
         std::printf("\n");
     }
     return 0;

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace penumbra {
 
@@ -16,6 +18,29 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
 // On any failure the temporary file is removed and RuntimeError names PATH.
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path&)>& write);
+
+// A frame's files as one unit: while a group is alive on this thread, writeAtomically writes
+// each temporary file but defers its rename; commit() renames them in the order written (so
+// the file written last appears last), and an uncommitted group removes its temporaries.
+class AtomicGroup {
+public:
+    AtomicGroup();
+    ~AtomicGroup();
+    AtomicGroup(const AtomicGroup&) = delete;
+    AtomicGroup& operator=(const AtomicGroup&) = delete;
+    // Throws RuntimeError naming the file that could not be renamed (the rest are removed).
+    void commit();
+
+private:
+    friend void writeAtomically(const std::filesystem::path&,
+                                const std::function<void(const std::filesystem::path&)>&);
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> pending_;  // tmp, final
+    AtomicGroup* outer_;
+};
+
+// Removes the temporaries "<dir>/.<name>.<pid>.tmp" of PATH left by a process that is gone (its
+// PID is not alive, or was started after the file was last written). Returns how many.
+int removeStaleTemporaries(const std::filesystem::path& path);
 
 // For checking outputs before any work: throws InputError("LABEL: PATH: ...") when
 // writeAtomically would refuse to replace what is at PATH.

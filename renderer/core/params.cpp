@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
 
@@ -123,11 +124,16 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
         for (const auto& s : specs) known = known || s.key == key;
         if (!known) {
             std::string allowed;
-            for (const auto& s : specs)
+            std::vector<std::string_view> names;
+            for (const auto& s : specs) {
                 allowed += (allowed.empty() ? "" : ", ") + std::string(s.key);
+                names.push_back(s.key);
+            }
+            const std::string near = nearestName(key, names);
             throw InputError(prefix + key + ": unknown parameter for technique '" +
-                             block.value("name", std::string("?")) +
-                             "' (known: " + (allowed.empty() ? "none" : allowed) + ")");
+                             block.value("name", std::string("?")) + "' (" +
+                             (near.empty() ? "" : "did you mean '" + near + "'? ") +
+                             "known: " + (allowed.empty() ? "none" : allowed) + ")");
         }
     }
     nlohmann::json out = nlohmann::json::object();

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "renderer/core/did_you_mean.h"
+
 namespace penumbra::output {
 
 namespace {
@@ -36,7 +38,12 @@ std::vector<ChannelPair> selectChannels(const Image& ref, const Image& test,
     for (const auto& name : names) {
         const ImageChannel* r = ref.find(name);
         const ImageChannel* t = test.find(name);
-        if (!r) throw CompareMismatch(Side::Reference, "reference has no channel '" + name + "'");
+        if (!r) {
+            std::vector<std::string> known;
+            for (const auto& c : ref.channels) known.push_back(c.name);
+            throw CompareMismatch(Side::Reference, "reference has no channel '" +
+                                                       name + "'" + didYouMean(name, known));
+        }
         if (!t) throw CompareMismatch(Side::Test, "test image has no channel '" + name + "'");
         pairs.push_back({r, t});
     }

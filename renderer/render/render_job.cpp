@@ -4,22 +4,22 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <map>
-#include <set>
 
 #include "penumbra/version.h"
-#include "renderer/core/atomic_file.h"
+#include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
-#include "renderer/core/frame_spec.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/core/output_paths.h"
 #include "renderer/gl/debug.h"
-#include "renderer/output/exr.h"
-#include "renderer/output/preview.h"
 #include "renderer/output/timing.h"
 #include "renderer/render/frame_renderer.h"
+#include "renderer/render/render_job_outputs.h"
+#include "renderer/render/render_job_plan.h"
+#include "renderer/render/render_job_progress.h"
+#include "renderer/scene/overrides.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::render {
@@ -27,56 +27,27 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct FramePlan {
-    int frame = 0;
-    std::string exr, timing, preview;
-    bool skip = false;
-};
-
 const techniques::TechniqueInfo& findTechniqueOrThrow(const scene::Scene& s,
                                                       const RenderRequest& req) {
     std::string name = s.technique.value("name", std::string("hard"));
     if (const auto* info = techniques::findTechnique(name)) return *info;
-    std::string known;
-    for (const auto& t : techniques::allTechniques())
-        known += (known.empty() ? "" : ", ") + std::string(t.name);
     std::string where = req.technique ? "--technique" : s.path.string() + ": technique.name";
-    throw InputError(where + ": unknown technique '" + quoteText(name) + "' (known: " + known +
-                     ")");
+    throw InputError(where + ": " + unknownTechniqueMessage(quoteText(name)));
 }
 
 Params resolveFor(const techniques::TechniqueInfo& info, const scene::Scene& s) {
     return resolveParams(info.params, s.technique, s.path.string() + ": technique");
 }
 
-std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& scene_name,
-                                  const std::vector<int>& frames) {
-    const bool several = frames.size() > 1;
-    const std::string exr_pattern = req.output.value_or("out/" + scene_name + ".####.exr");
-    std::vector<FramePlan> plans;
-    std::map<std::string, int> seen;
-    for (int f : frames) {
-        FramePlan p;
-        p.frame = f;
-        p.exr = expandFramePattern(exr_pattern, f, several);
-        p.timing = req.timings ? expandFramePattern(*req.timings, f, several)
-                               : replaceExtension(p.exr, ".json");
-        if (req.preview) p.preview = expandFramePattern(*req.preview, f, several);
-        for (const auto& [path, flag] :
-             {std::pair{p.exr, "--output"}, std::pair{p.timing, "--timings"},
-              std::pair{p.preview, "--preview"}}) {
-            if (path.empty()) continue;
-            checkOutputPath(path, flag);  // no device, FIFO or folder replaced by the rename
-            auto [it, inserted] = seen.emplace(path, f);
-            if (!inserted)
-                throw InputError(std::string(flag) + ": frames " + std::to_string(it->second) +
-                                 " and " + std::to_string(f) + " would both write '" + path +
-                                 "' (use # in the pattern)");
-        }
-        p.skip = req.skip_existing && std::filesystem::exists(p.exr);
-        plans.push_back(p);
+// Each -D technique.KEY=VALUE checked alone first, so that its error names the flag.
+void checkTechniqueOverrides(const techniques::TechniqueInfo& info, const RenderRequest& req) {
+    constexpr std::string_view kPrefix = "technique.";
+    for (const scene::Override& o : req.overrides) {
+        if (o.key.rfind(kPrefix, 0) != 0 || o.key == "technique.name") continue;
+        nlohmann::json block = {{"name", std::string(info.name)},
+                                {o.key.substr(kPrefix.size()), scene::parseOverrideValue(o)}};
+        (void)resolveParams(info.params, block, "-D technique");
     }
-    return plans;
 }
 
 void checkGlLimits(const scene::Scene& s, const Params& params, const gl::ContextInfo& info) {
@@ -96,62 +67,41 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
         throw InputError(where + "lights: more lights than this GL's array layers allow");
 }
 
-// "frame i of n (frame f), pass, elapsed, ETA" on one rewritten stderr line (a terminal only).
-class Progress {
-public:
-    Progress(bool enabled, size_t total) : enabled_(enabled), total_(total), start_(Clock::now()) {}
-    void frame(size_t index, int frame) {
-        index_ = index;
-        frame_ = frame;
-        show("", true);
-    }
-    void pass(const std::string& name) { show(name, false); }
-    void done() {
-        if (enabled_ && shown_) std::fprintf(stderr, "\n");
-        shown_ = false;
-    }
-
-private:
-    void show(const std::string& pass, bool force) {
-        if (!enabled_) return;
-        auto now = Clock::now();
-        if (!force && now - last_ < std::chrono::milliseconds(100)) return;
-        last_ = now;
-        double elapsed = std::chrono::duration<double>(now - start_).count();
-        double eta = index_ > 0 ? elapsed / static_cast<double>(index_) *
-                                      static_cast<double>(total_ - index_)
-                                : 0.0;
-        std::fprintf(stderr, "\r\033[Kpenumbra: frame %zu of %zu (frame %d) %-18s elapsed %.1fs",
-                     index_ + 1, total_, frame_, pass.c_str(), elapsed);
-        if (index_ > 0) std::fprintf(stderr, ", ETA %.1fs", eta);
-        std::fflush(stderr);
-        shown_ = true;
-    }
-    bool enabled_;
-    bool shown_ = false;
-    size_t total_, index_ = 0;
-    int frame_ = 0;
-    Clock::time_point start_, last_;
-};
+// A glTF model given where a scene belongs gets a hint instead of a JSON parse error.
+void refuseModelAsScene(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".gltf" || ext == ".glb")
+        throw InputError(file.string() + ": a glTF model, not a scene: name it in a scene's objects "
+                         "({\"gltf\": \"" + file.filename().string() +
+                         "\"}, see docs/scene-format.md)");
+}
 
 }  // namespace
+
+std::string unknownTechniqueMessage(const std::string& name) {
+    std::vector<std::string> names;
+    std::string known;
+    for (const auto& t : techniques::allTechniques()) {
+        names.emplace_back(t.name);
+        known += (known.empty() ? "" : ", ") + names.back();
+    }
+    const std::string near = nearestName(name, names);
+    return "unknown technique '" + name + "' (" +
+           (near.empty() ? "" : "did you mean '" + near + "'? ") + "known: " + known + ")";
+}
 
 int runRenderJob(const RenderRequest& req) {
     const auto job_start = Clock::now();
     // 1. Everything from the input, validated before any GL or output.
+    refuseModelAsScene(req.scene);
     scene::LoadOptions options;
     options.technique = req.technique;
     auto source = scene::SceneSource::load(req.scene, req.overrides, options);
-    std::vector<int> frames;
-    if (req.frames)
-        frames = parseFrameSpec(*req.frames, "--frames");
-    else if (source.animationFrames())
-        frames =
-            parseFrameSpec(*source.animationFrames(), req.scene.string() + ": animation.frames");
-    else
-        frames = {0};
+    const std::vector<int> frames = chooseFrames(req, source);
     scene::Scene first = source.at(frames.front());
     const techniques::TechniqueInfo& info = findTechniqueOrThrow(first, req);
+    checkTechniqueOverrides(info, req);
     Params params = resolveFor(info, first);
     for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
     std::vector<FramePlan> plans = planFrames(req, first.name, frames);
@@ -160,6 +110,8 @@ int runRenderJob(const RenderRequest& req) {
             if (!p.skip) std::printf("%d\n", p.frame);
         return 0;
     }
+    checkOutputFolders(plans);  // an unwritable folder is found before the first frame
+    removeStaleTemporaries(plans);
     if (std::all_of(plans.begin(), plans.end(), [](const FramePlan& p) { return p.skip; })) {
         if (!req.quiet)
             std::fprintf(stderr, "penumbra: all %zu frames exist already (--skip-existing)\n",
@@ -181,6 +133,7 @@ int runRenderJob(const RenderRequest& req) {
     const nlohmann::json backend = {{"api", glinfo.api},         {"device", glinfo.device},
                                     {"vendor", glinfo.vendor},   {"renderer", glinfo.renderer},
                                     {"version", glinfo.version}, {"clock", timer.clockName()}};
+    const std::string scene_name = canonicalScenePath(req.scene);  // the same from any folder
     const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
     Progress progress(progress_on, plans.size());
     if (progress_on) timer.on_begin = [&](const std::string& pass) { progress.pass(pass); };
@@ -223,16 +176,14 @@ int runRenderJob(const RenderRequest& req) {
                                 {"penumbra/commit", PENUMBRA_COMMIT},
                                 {"penumbra/technique", std::string(info.name)},
                                 {"penumbra/params", renderer.params().json().dump()},
-                                {"penumbra/scene", req.scene.string()},
+                                {"penumbra/scene", scene_name},
                                 {"penumbra/frame", std::to_string(plan.frame)},
                                 {"penumbra/samples", std::to_string(renderer.samples())},
                                 {"penumbra/backend", glinfo.api},
                                 {"penumbra/gl_vendor", glinfo.vendor},
                                 {"penumbra/gl_renderer", glinfo.renderer},
                                 {"penumbra/gl_version", glinfo.version}};
-            output::writeExr(plan.exr, image);
-            if (!plan.preview.empty()) output::writePngPreview(plan.preview, image);
-            report.scene = req.scene.string();
+            report.scene = scene_name;
             report.frame = plan.frame;
             report.technique = std::string(info.name);
             report.params = renderer.params().json();
@@ -246,7 +197,7 @@ int runRenderJob(const RenderRequest& req) {
             report.stats["lights"] = renderer.lightCount();
             report.output = {{"exr", plan.exr}};
             if (!plan.preview.empty()) report.output["preview"] = plan.preview;
-            output::writeTimingJson(plan.timing, report);
+            writeFrameFiles(plan, image, report);
             ++written;
         } catch (const RuntimeError& e) {
             progress.done();

@@ -21,6 +21,9 @@ struct RenderRequest {
     std::optional<std::string> timings;      // --timings PATTERN
     std::optional<std::string> preview;      // --preview PATTERN
     std::optional<std::string> frames;       // -f SPEC
+    std::string frames_flag = "--frames";    // where FRAMES came from, for messages
+    bool farm_task = false;  // --frame-from-env: one task of many, so patterns need a #
+    bool strict = false;     // --strict: a frame outside the animation range is an error
     gl::ContextRequest gl;
     bool skip_existing = false;
     bool list_frames = false;  // print the frames to render (stdout) and stop: no GL
@@ -28,6 +31,9 @@ struct RenderRequest {
     int repeat = 1;
     bool quiet = false;
 };
+
+// "unknown technique 'NAME' (did you mean 'X'? known: a, b, ...)".
+std::string unknownTechniqueMessage(const std::string& name);
 
 // Returns the exit code (0, or 1 when a frame failed at run time). Throws InputError (bad
 // input, before anything is written) and BackendError (no context).

@@ -16,6 +16,7 @@
 
 #include "penumbra/version.h"
 #include "renderer/core/atomic_file.h"
+#include "renderer/core/content_hash.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
 #include "renderer/gl/debug.h"
@@ -46,14 +47,6 @@ struct Job {
     int width = 0, height = 0;
 };
 
-std::string fnv1a(const std::string& text) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-}
-
 // Loads and validates JOB's scene (exit 2 on bad input) and fills its hash and technique.
 void validate(Job& job, const SweepRequest& req) {
     scene::LoadOptions options;
@@ -68,7 +61,7 @@ void validate(Job& job, const SweepRequest& req) {
         throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
                          quoteText(job.technique_name) + "'");
     resolveParams(info->params, s.technique, req.scene.string() + ": technique");
-    job.hash = fnv1a(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
+    job.hash = contentHash(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
                      PENUMBRA_VERSION);
 }
 

@@ -5,14 +5,24 @@
 #include <cfloat>
 #include <cmath>
 
+#include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
 
 namespace penumbra::scene {
 
-void failAt(const std::string& file, const std::string& key, const std::string& what) {
-    if (key.empty()) throw InputError(file + ": " + what);
-    throw InputError(file + ": " + key + ": " + what);
+namespace {
+std::string located(const std::string& file, const std::string& key, const std::string& what) {
+    return key.empty() ? file + ": " + what : file + ": " + key + ": " + what;
 }
+}  // namespace
+
+void failAt(const std::string& file, const std::string& key, const std::string& what) {
+    throw InputError(located(file, key, what));
+}
+
+UnknownKeyError::UnknownKeyError(const std::string& file, const std::string& parent,
+                                 const std::string& name, const std::string& what)
+    : InputError(located(file, parent, what)), key_(joinKey(parent, name)), what_(what) {}
 
 std::string describeType(const nlohmann::json& value) {
     switch (value.type()) {
@@ -51,7 +61,12 @@ void Field::expectObject(std::initializer_list<std::string_view> allowed) const 
             if (!list.empty()) list += ", ";
             list += name;
         }
-        fail("unknown key '" + item.key() + "' (allowed: " + list + ")");
+        const std::vector<std::string_view> names(allowed);
+        const std::string near = nearestName(item.key(), names);
+        throw UnknownKeyError(*file_, key_, item.key(),
+                              "unknown key '" + item.key() + "' (" +
+                                  (near.empty() ? "" : "did you mean '" + near + "'? ") +
+                                  "allowed: " + list + ")");
     }
 }
 

@@ -11,10 +11,25 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "renderer/core/error.h"
+
 namespace penumbra::scene {
 
 // Throws InputError("<file>: <key>: <what>"), or "<file>: <what>" when KEY is empty.
 [[noreturn]] void failAt(const std::string& file, const std::string& key, const std::string& what);
+
+// An unknown key (the message failAt gives), with its full dotted KEY, so that the loader can
+// blame the -D flag that created it instead of the file.
+class UnknownKeyError : public InputError {
+public:
+    UnknownKeyError(const std::string& file, const std::string& parent, const std::string& name,
+                    const std::string& what);
+    const std::string& key() const { return key_; }    // "technique.x", "lights.0.sise"
+    const std::string& what_only() const { return what_; }  // the message after the key
+
+private:
+    std::string key_, what_;
+};
 
 // The JSON type of VALUE in words ("a string", "an array", ...), for "expected X, got Y".
 std::string describeType(const nlohmann::json& value);

@@ -23,6 +23,13 @@ std::string withoutFile(const InputError& e, const std::string& file) {
     return message;
 }
 
+// An unknown key that a -D created is the flag's fault: "-D techniqe.samples: unknown key ...".
+void blameOverride(const UnknownKeyError& e, const std::vector<Override>& overrides) {
+    for (const Override& o : overrides)
+        if (o.key == e.key() || o.key.rfind(e.key() + ".", 0) == 0)
+            throw InputError("-D " + o.key + ": " + e.what_only());
+}
+
 }  // namespace
 
 struct SceneSource::Track {
@@ -53,8 +60,15 @@ SceneSource SceneSource::load(const std::filesystem::path& file,
     context.max_image_size = options.max_image_size;
     context.assets = &source.assets_->store;
 
-    Scene still = buildScene(doc, context);  // every value checked, every asset loaded
-    Animation animation = parseAnimation(doc, label);
+    Scene still;
+    Animation animation;
+    try {
+        still = buildScene(doc, context);  // every value checked, every asset loaded
+        animation = parseAnimation(doc, label);
+    } catch (const UnknownKeyError& e) {
+        blameOverride(e, overrides);
+        throw;
+    }
     source.animation_frames_ = animation.frames;
     for (AnimationTrack& track : animation.tracks)
         source.tracks_.push_back(std::make_shared<const Track>(Track{std::move(track)}));

@@ -8,10 +8,13 @@ scene="$DATA/small.json"
 for f in 01 02 03; do
     [ -f "seq/a.$f.exr" ] && [ -f "seq/a.$f.json" ] || fail "missing seq/a.$f.exr or .json"
 done
-# Several frames and no #: .#### goes before the extension.
-"$PENUMBRA" render "$scene" -f 1,3 -o plain.exr --timings "t/plain.json" --quiet
-[ -f plain.0001.exr ] && [ -f plain.0003.exr ] && [ -f t/plain.0001.json ] ||
-    fail "no .#### numbering without #"
+# Several frames and no # in a pattern: an error before anything renders (every frame would
+# have written one file); with the default pattern the timing JSON follows the EXR's numbers.
+expect_exit 2 "^penumbra: --output: plain.exr: no # for the frame number" -- \
+    "$PENUMBRA" render "$scene" -f 1,3 -o plain.exr --quiet
+expect_exit 2 "^penumbra: --timings: t/plain.json: no # " -- \
+    "$PENUMBRA" render "$scene" -f 1,3 -o "p/plain.#.exr" --timings "t/plain.json" --quiet
+[ ! -e plain.0001.exr ] && [ ! -e p ] && [ ! -e t ] || fail "output after a pattern error"
 # One frame, no #: the name as given; --preview writes a PNG.
 "$PENUMBRA" render "$scene" -f 2 -o one.exr --preview one.png --quiet
 [ -f one.exr ] && [ -f one.png ] || fail "single frame output"

@@ -34,7 +34,7 @@ rc=0
 grep -q "2 frames: 0 written, 0 skipped (already there), 2 failed" summary.txt ||
     { cat summary.txt; fail "failure summary"; }
 # Bad input is refused before any job runs.
-expect_exit 2 "needs a run of #" -- "$sequence" "$scene" --binary "$PENUMBRA" -- -o plain.exr
+expect_exit 2 "^penumbra: --output: plain.exr: no # for the frame number" -- "$sequence" "$scene" --binary "$PENUMBRA" -- -o plain.exr
 expect_exit 2 "frames" -- "$sequence" "$scene" --binary "$PENUMBRA" -- -f 9-1 -o "x.#.exr"
 
 # A farm task index: frame = $TASK + offset, same bytes as the sequence's frame 4.

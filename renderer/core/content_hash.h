@@ -1,0 +1,12 @@
+// A short, stable hash of bytes (64-bit FNV-1a as 16 hex digits): cache keys and the scene's
+// identity in output headers. Not cryptographic.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace penumbra {
+
+std::string contentHash(std::string_view bytes);
+
+}  // namespace penumbra
