@@ -21,7 +21,8 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
                            lights.0.size=[0.5,0.5],[1,1]
   --vary KEY=A:B:N[:log]   N values from A to B, evenly or geometrically spaced
   -t, --technique NAME     the technique under test (default: the scene's)
-  -D, --set KEY=VALUE      a fixed override for every run and reference
+  -D, --set KEY=VALUE      a fixed override for every run, and for the reference unless it is
+                           a technique.* key of another technique than the reference's
   --reference-technique T  the ground truth (default: exact, ray-traced)
   --reference-set K=V      an override for the reference only (default technique.samples=32)
   -f, --frame N            the frame to render (default 0)

@@ -233,13 +233,19 @@ int runSweepJob(const SweepRequest& req) {
     std::map<std::string, size_t> reference_of_hash;
     std::vector<size_t> run_reference;
     for (const auto& point : points) {
+        // Technique parameters (varied, or fixed by -D) belong to the technique under test,
+        // not to the reference, unless both are the same technique (-D only).
+        auto techniqueKey = [](const std::string& key) {
+            return key == "technique" || key.rfind("technique.", 0) == 0;
+        };
         Job run{req.overrides, req.technique, {}, {}};
-        Job ref{req.overrides, req.reference_technique, {}, {}};
+        Job ref{{}, req.reference_technique, {}, {}};
+        for (const auto& o : req.overrides)
+            if (!techniqueKey(o.key) || req.technique == req.reference_technique)
+                ref.overrides.push_back(o);
         for (const auto& [key, value] : point) {
             run.overrides.push_back({key, value.dump()});
-            // Technique parameters belong to the technique under test, not to the reference.
-            if (key != "technique" && key.rfind("technique.", 0) != 0)
-                ref.overrides.push_back({key, value.dump()});
+            if (!techniqueKey(key)) ref.overrides.push_back({key, value.dump()});
         }
         ref.overrides.insert(ref.overrides.end(), req.reference_sets.begin(),
                              req.reference_sets.end());
