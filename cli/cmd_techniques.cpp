@@ -5,6 +5,7 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::cli {
@@ -52,7 +53,7 @@ int runTechniques(const Args& args) {
         if (c.flag("", "--json")) {
             json = true;
         } else if (auto p = c.positional()) {
-            if (name) c.fail("unexpected argument '" + *p + "'");
+            if (name) c.fail("unexpected argument '" + quoteText(*p) + "'");
             name = *p;
         } else {
             c.unknown();
@@ -65,7 +66,7 @@ int runTechniques(const Args& args) {
         std::string known;
         for (const auto& t : techniques::allTechniques())
             known += (known.empty() ? "" : ", ") + std::string(t.name);
-        c.fail("unknown technique '" + *name + "' (known: " + known + ")");
+        c.fail("unknown technique '" + quoteText(*name) + "' (known: " + known + ")");
     }
     if (json) {
         nlohmann::json out = nlohmann::json::array();
