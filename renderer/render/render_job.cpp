@@ -67,11 +67,14 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& s
               std::pair{p.preview, "--preview"}}) {
             if (path.empty()) continue;
             checkOutputPath(path, flag);  // no device, FIFO or folder replaced by the rename
-            auto [it, inserted] = seen.emplace(path, f);
+            auto [it, inserted] = seen.emplace(outputIdentity(path), f);
+            if (!inserted && it->second == f)
+                throw InputError(std::string(flag) + ": '" + quoteText(path) +
+                                 "' is another output of frame " + std::to_string(f));
             if (!inserted)
                 throw InputError(std::string(flag) + ": frames " + std::to_string(it->second) +
-                                 " and " + std::to_string(f) + " would both write '" + path +
-                                 "' (use # in the pattern)");
+                                 " and " + std::to_string(f) + " would both write '" +
+                                 quoteText(path) + "' (use # in the pattern)");
         }
         p.skip = req.skip_existing && std::filesystem::exists(p.exr);
         plans.push_back(p);
