@@ -20,6 +20,7 @@
 #include "renderer/output/preview.h"
 #include "renderer/output/timing.h"
 #include "renderer/render/frame_renderer.h"
+#include "renderer/render/memory_budget.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::render {
@@ -175,6 +176,7 @@ int runRenderJob(const RenderRequest& req) {
     const gl::ContextInfo& glinfo = context->info();
     gl::enableDebugOutput(req.gl.debug);
     checkGlLimits(first, params, glinfo);
+    checkMemoryBudget(first, info.name, params, &glinfo);  // exit 2 before any allocation
 
     // 3. Per-run GPU resources.
     const int width = first.image.width, height = first.image.height;

@@ -1,6 +1,8 @@
 // The sweep job: see sweep_job.h.
 #include "renderer/render/sweep_job.h"
 
+#include "renderer/render/memory_budget.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -67,7 +69,9 @@ void validate(Job& job, const SweepRequest& req) {
     if (!info)
         throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
                          quoteText(job.technique_name) + "'");
-    resolveParams(info->params, s.technique, req.scene.string() + ": technique");
+    checkMemoryBudget(s, job.technique_name,
+                      resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
+                      nullptr);
     job.hash = fnv1a(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
                      PENUMBRA_VERSION);
 }
