@@ -303,7 +303,7 @@ int runSweepJob(const SweepRequest& req) {
         ref_paths.push_back(path);
         const bool needed =
             !req.run_index || run_reference[static_cast<size_t>(*req.run_index - 1)] == i;
-        if (fs::exists(path) || !needed) continue;
+        if (!needed || output::isReadableExr(path)) continue;  // a truncated one is redone
         if (progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());
@@ -329,7 +329,7 @@ int runSweepJob(const SweepRequest& req) {
                 json old = scene::parseJsonText(
                     scene::readTextFile(record, record.string(), kMaxRecordBytes), record.string());
                 if (old.is_object() && old.value("settings_hash", "") == runs[i].hash &&
-                    fs::exists(req.out / old.value("exr", std::string("-"))))
+                    output::isReadableExr(req.out / old.value("exr", std::string("-"))))
                     entry = old;
             } catch (const InputError&) {
             } catch (const json::exception&) {
