@@ -7,6 +7,8 @@
 
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
+#include "renderer/core/memory_limit.h"
 
 namespace penumbra::cli {
 
@@ -68,10 +70,10 @@ void ArgCursor::unknown() const {
     if (a.size() > 1 && a[0] == '-') {
         const std::string typed = a.substr(0, a.find('='));
         const std::string near = nearestName(typed, names_);
-        fail("unknown flag '" + a + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
+        fail("unknown flag '" + quoteText(a) + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
              "see --help)");
     }
-    fail("unexpected argument '" + a + "' (see --help)");
+    fail("unexpected argument '" + quoteText(a) + "' (see --help)");
 }
 
 void ArgCursor::fail(const std::string& message) const {
@@ -83,7 +85,7 @@ double parseDouble(const ArgCursor& c, std::string_view flag, const std::string&
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, v);
     if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
-        c.fail(std::string(flag) + ": expected a number, got '" + text + "'");
+        c.fail(std::string(flag) + ": expected a number, got '" + quoteText(text) + "'");
     return v;
 }
 
@@ -92,19 +94,30 @@ int parseInt(const ArgCursor& c, std::string_view flag, const std::string& text,
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, v);
     if (text.empty() || ec != std::errc() || ptr != end)
-        c.fail(std::string(flag) + ": expected a whole number, got '" + text + "'");
+        c.fail(std::string(flag) + ": expected a whole number, got '" + quoteText(text) + "'");
     if (v < min || v > max)
-        c.fail(std::string(flag) + ": " + text + " is out of range [" + std::to_string(min) + ", " +
-               std::to_string(max) + "]");
+        c.fail(std::string(flag) + ": " + quoteText(text) + " is out of range [" +
+               std::to_string(min) + ", " + std::to_string(max) + "]");
     return static_cast<int>(v);
 }
 
 std::pair<int, int> parseSize(const ArgCursor& c, std::string_view flag, const std::string& text) {
     size_t x = text.find('x');
-    if (x == std::string::npos) c.fail(std::string(flag) + ": expected WxH, got '" + text + "'");
+    if (x == std::string::npos)
+        c.fail(std::string(flag) + ": expected WxH, got '" + quoteText(text) + "'");
     int w = parseInt(c, flag, text.substr(0, x), 1, 1 << 20);
     int h = parseInt(c, flag, text.substr(x + 1), 1, 1 << 20);
     return {w, h};
+}
+
+bool parseMemoryLimitFlag(ArgCursor& c) {
+    const auto v = c.option("", "--memory-limit");
+    if (!v) return false;
+    const auto bytes = parseMemorySize(*v);
+    if (!bytes)
+        c.fail("--memory-limit: expected a size such as 8G or 512M, got '" + quoteText(*v) + "'");
+    setMemoryLimit(*bytes);
+    return true;
 }
 
 }  // namespace penumbra::cli

@@ -52,4 +52,8 @@ int parseInt(const ArgCursor& c, std::string_view flag, const std::string& text,
 // "WxH" -> {W, H}.
 std::pair<int, int> parseSize(const ArgCursor& c, std::string_view flag, const std::string& text);
 
+// Consumes "--memory-limit SIZE" (8G, 512M, ...: core/memory_limit.h) and sets the process's
+// limit; false when the current argument is another one.
+bool parseMemoryLimitFlag(ArgCursor& c);
+
 }  // namespace penumbra::cli

@@ -10,6 +10,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/output/compare.h"
 #include "renderer/output/exr.h"
 
@@ -38,6 +39,8 @@ options:
                      `objects`) is listed, e.g. the receivers; counts and means are over them
   --diff OUT.exr     write |REF - TEST| of the compared channels (written even on failure)
   --json             print only a JSON object with every metric on stdout
+  --memory-limit SIZE  refuse images whose pixels would need more (8G, 512M; default half
+                     the physical memory); exit 4
   --help             print this help
   (idiff's spellings -fail, -failpercent, -warn, -warnpercent, -hardfail also work)
 
@@ -54,13 +57,14 @@ struct CompareArgs {
 
 double parseThreshold(const ArgCursor& c, std::string_view flag, const std::string& text) {
     const double v = parseDouble(c, flag, text);
-    if (v < 0) c.fail(std::string(flag) + ": must be >= 0, got '" + text + "'");
+    if (v < 0) c.fail(std::string(flag) + ": must be >= 0, got '" + quoteText(text) + "'");
     return v;
 }
 
 double parsePercent(const ArgCursor& c, std::string_view flag, const std::string& text) {
     const double v = parseDouble(c, flag, text);
-    if (v < 0 || v > 100) c.fail(std::string(flag) + ": must be in [0, 100], got '" + text + "'");
+    if (v < 0 || v > 100)
+        c.fail(std::string(flag) + ": must be in [0, 100], got '" + quoteText(text) + "'");
     return v;
 }
 
@@ -74,9 +78,9 @@ std::vector<std::string> parseList(const ArgCursor& c, const std::string& flag,
         const size_t comma = text.find(',', start);
         std::string item =
             text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        if (item.empty()) c.fail(flag + ": empty " + what + " in '" + text + "'");
+        if (item.empty()) c.fail(flag + ": empty " + what + " in '" + quoteText(text) + "'");
         if (!seen.insert(item).second)
-            c.fail(flag + ": " + what + " '" + item + "' is listed twice");
+            c.fail(flag + ": " + what + " '" + quoteText(item) + "' is listed twice");
         items.push_back(std::move(item));
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -111,8 +115,10 @@ CompareArgs parseArgs(const Args& args) {
             a.diff = *v;
         } else if (c.flag("", "--json")) {
             a.json = true;
+        } else if (parseMemoryLimitFlag(c)) {
         } else if (auto p = c.positional()) {
-            if (files.size() == 2) c.fail("unexpected argument '" + *p + "' (see --help)");
+            if (files.size() == 2)
+                c.fail("unexpected argument '" + quoteText(*p) + "' (see --help)");
             files.push_back(*p);
         } else {
             c.unknown();

@@ -8,6 +8,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "renderer/core/atomic_file.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/output/preview.h"
 #include "renderer/scene/environment_image.h"
 #include "renderer/scene/light_fitting.h"
@@ -33,6 +34,8 @@ options:
   --face-size N          cube face resolution in texels, 4 to 512 (default 32)
   --residual R           share of a face's mean energy left in each covered texel, in [0, 1)
                          for later lights to grow over (default 0)
+  --memory-limit SIZE    refuse a map whose pixels would need more (8G, 512M; default half
+                         the physical memory)
   --help                 print this help
 )";
 
@@ -56,21 +59,22 @@ int runFitLights(const Args& args) {
         } else if ((v = c.option("", "--threshold"))) {
             settings.threshold = parseDouble(c, "--threshold", *v);
             if (!(settings.threshold > 0 && settings.threshold < 1))
-                c.fail("--threshold: expected a number in (0, 1), got '" + *v + "'");
+                c.fail("--threshold: expected a number in (0, 1), got '" + quoteText(*v) + "'");
         } else if ((v = c.option("", "--max"))) {
             settings.max_lights = parseInt(c, "--max", *v, 0, 100000);
         } else if ((v = c.option("", "--shape"))) {
             if (*v != "square" && *v != "rect")
-                c.fail("--shape: expected square or rect, got '" + *v + "'");
+                c.fail("--shape: expected square or rect, got '" + quoteText(*v) + "'");
             settings.square = *v == "square";
         } else if ((v = c.option("", "--face-size"))) {
             face_size = parseInt(c, "--face-size", *v, 4, 512);
         } else if ((v = c.option("", "--residual"))) {
             settings.residual = parseDouble(c, "--residual", *v);
             if (!(settings.residual >= 0 && settings.residual < 1))
-                c.fail("--residual: expected a number in [0, 1), got '" + *v + "'");
+                c.fail("--residual: expected a number in [0, 1), got '" + quoteText(*v) + "'");
+        } else if (parseMemoryLimitFlag(c)) {
         } else if (auto p = c.positional()) {
-            if (input) c.fail("unexpected argument '" + *p + "'");
+            if (input) c.fail("unexpected argument '" + quoteText(*p) + "'");
             input = *p;
         } else {
             c.unknown();

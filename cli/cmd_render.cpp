@@ -5,6 +5,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/render/render_job.h"
 
 namespace penumbra::cli {
@@ -41,6 +42,8 @@ options:
       --repeat N         time N renders per frame; the JSON gets min/median/max per pass
       --quiet            no progress or messages except errors
       --gl-debug         print every KHR_debug message
+      --memory-limit SIZE  refuse a render whose buffers would need more (8G, 512M;
+                         default half the physical memory)
   -h, --help             this help
       --version          print the version
 
@@ -76,7 +79,7 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
         req.technique = *v;
     } else if ((v = c.option("-D", "--set"))) {
         size_t eq = v->find('=');
-        if (eq == std::string::npos || eq == 0) c.fail("-D: expected KEY=VALUE, got '" + *v + "'");
+        if (eq == std::string::npos || eq == 0) c.fail("-D: expected KEY=VALUE, got '" + quoteText(*v) + "'");
         req.overrides.push_back({v->substr(0, eq), v->substr(eq + 1)});
     } else if ((v = c.option("-o", "--output"))) {
         req.output = pattern(c, "--output", *v);
@@ -120,7 +123,7 @@ int runRender(const Args& args) {
             std::fputs(kHelp, stdout);
             return 0;
         }
-        if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl)) continue;
+        if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl) || parseMemoryLimitFlag(c)) continue;
         if (auto v = c.option("", "--frame-from-env")) {
             if (v->empty()) c.fail("--frame-from-env: empty variable name");
             frame_env = *v;

@@ -3,6 +3,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/render/sweep_job.h"
 
 namespace penumbra::cli {
@@ -32,6 +33,8 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
   -j, --jobs N             render the runs as N parallel processes through GNU parallel
                            (timings then compete for the machine: compare them with care)
   --no-report              skip the plots and index.html
+  --memory-limit SIZE      refuse runs whose buffers would need more (8G, 512M; default half
+                           the physical memory)
   --backend B, --device N, --gl-debug, --quiet   as for render
 
 exit codes: 0 done, 1 a run or the report failed, 2 bad command line or input (found before
@@ -41,7 +44,7 @@ anything renders), 3 no usable OpenGL backend.
 scene::Override keyValue(const ArgCursor& c, const char* flag, const std::string& v) {
     size_t eq = v.find('=');
     if (eq == std::string::npos || eq == 0)
-        c.fail(std::string(flag) + ": expected KEY=VALUE, got '" + v + "'");
+        c.fail(std::string(flag) + ": expected KEY=VALUE, got '" + quoteText(v) + "'");
     return {v.substr(0, eq), v.substr(eq + 1)};
 }
 
@@ -89,9 +92,9 @@ int runSweep(const Args& args) {
             req.report = false;
         } else if (c.flag("-q", "--quiet")) {
             req.quiet = true;
-        } else if (parseBackendFlag(c, req.gl)) {
+        } else if (parseBackendFlag(c, req.gl) || parseMemoryLimitFlag(c)) {
         } else if ((v = c.positional())) {
-            if (scene) c.fail("unexpected argument '" + *v + "': one scene per sweep");
+            if (scene) c.fail("unexpected argument '" + quoteText(*v) + "': one scene per sweep");
             scene = *v;
         } else {
             c.unknown();

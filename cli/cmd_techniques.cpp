@@ -8,6 +8,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "renderer/render/render_job.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::cli {
@@ -75,7 +76,7 @@ int runTechniques(const Args& args) {
         if (c.flag("", "--json")) {
             json = true;
         } else if (auto p = c.positional()) {
-            if (name) c.fail("unexpected argument '" + *p + "'");
+            if (name) c.fail("unexpected argument '" + quoteText(*p) + "'");
             name = *p;
         } else {
             c.unknown();

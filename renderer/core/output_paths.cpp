@@ -2,6 +2,8 @@
 #include "renderer/core/output_paths.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 namespace penumbra {
 namespace {
@@ -51,6 +53,14 @@ std::string replaceExtension(std::string_view path, std::string_view ext) {
     size_t dot = extensionStart(path);
     if (dot == std::string_view::npos) return std::string(path) + std::string(ext);
     return std::string(path.substr(0, dot)) + std::string(ext);
+}
+
+std::string outputIdentity(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    if (ec) return path;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(absolute, ec);
+    return ec ? absolute.lexically_normal().string() : canonical.string();
 }
 
 }  // namespace penumbra

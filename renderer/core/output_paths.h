@@ -12,4 +12,8 @@ std::string expandFramePattern(std::string_view pattern, int frame, bool several
 // PATH with its extension replaced by EXT (".json"), or EXT appended when it has none.
 std::string replaceExtension(std::string_view path, std::string_view ext);
 
+// What PATH names on disk, to tell whether two outputs clash: absolute and weakly canonical
+// ("./y.exr", "y.exr" and "out/../y.exr" are one file; links followed where they exist).
+std::string outputIdentity(const std::string& path);
+
 }  // namespace penumbra

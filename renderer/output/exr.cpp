@@ -25,6 +25,7 @@
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
+#include "renderer/core/memory_limit.h"
 #include "renderer/core/regular_file.h"
 
 namespace penumbra::output {
@@ -156,21 +157,39 @@ Image readExr(const std::filesystem::path& path) {
                                   std::to_string(height) + ", " + std::to_string(nChannels) +
                                   " channels)");
 
+        // Within the memory limit as declared; then decoded a strip of rows at a time into
+        // channels that grow with what decoded, so a header that declares more pixels than
+        // the file holds costs only what the file holds.
+        try {
+            requireMemory(
+                saturatingProduct({static_cast<std::uint64_t>(width),
+                                   static_cast<std::uint64_t>(height),
+                                   static_cast<std::uint64_t>(nChannels), 4}),
+                path.string(),
+                "reading its " + std::to_string(width) + "x" + std::to_string(height) + " pixels");
+        } catch (const InputError& e) {
+            throw UnreadableImage(e.what());
+        }
         Image image;
         image.width = static_cast<int>(width);
         image.height = static_cast<int>(height);
-        image.channels.reserve(static_cast<size_t>(nChannels));
+        for (const auto& [name, type] : channels) image.channels.push_back({name, type, {}});
         const size_t xStride = sizeof(float);
         const size_t yStride = sizeof(float) * static_cast<size_t>(width);
-        Imf::FrameBuffer frame;
-        for (const auto& [name, type] : channels) {
-            ImageChannel& c = image.add(name, type);
-            frame.insert(c.name,
-                         Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window, xStride, yStride));
-        }
-        if (nChannels > 0) {
+        constexpr int64_t kStripRows = 256;
+        for (int64_t row = 0; nChannels > 0 && row < height; row += kStripRows) {
+            const int64_t rows = std::min(kStripRows, height - row);
+            const int y0 = window.min.y + static_cast<int>(row);
+            const int y1 = y0 + static_cast<int>(rows) - 1;
+            const Imath::Box2i strip(Imath::V2i(window.min.x, y0), Imath::V2i(window.max.x, y1));
+            Imf::FrameBuffer frame;
+            for (ImageChannel& c : image.channels) {
+                c.pixels.resize(static_cast<size_t>((row + rows) * width));
+                float* first = c.pixels.data() + static_cast<size_t>(row * width);
+                frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, first, strip, xStride, yStride));
+            }
             file.setFrameBuffer(frame);
-            file.readPixels(window.min.y, window.max.y);
+            file.readPixels(y0, y1);
         }
 
         for (auto it = header.begin(); it != header.end(); ++it)
@@ -183,6 +202,15 @@ Image readExr(const std::filesystem::path& path) {
         throw UnreadableImage(where + "out of memory reading the image");
     } catch (const std::exception& e) {
         throw UnreadableImage(where + e.what());
+    }
+}
+
+bool isReadableExr(const std::filesystem::path& path) {
+    try {
+        (void)readExr(path);
+        return true;
+    } catch (const UnreadableImage&) {
+        return false;
     }
 }
 

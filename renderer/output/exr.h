@@ -29,4 +29,8 @@ void writeExr(const std::filesystem::path& path, const Image& image);
 // missing, unreadable, corrupt or truncated file, or one that is not a flat OpenEXR image.
 Image readExr(const std::filesystem::path& path);
 
+// True when readExr(PATH) succeeds: a cached image (a sweep's reference or run) is reused only
+// then, and rendered again when it is missing, truncated or corrupt.
+bool isReadableExr(const std::filesystem::path& path);
+
 }  // namespace penumbra::output

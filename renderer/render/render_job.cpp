@@ -20,6 +20,7 @@
 #include "renderer/render/render_job_plan.h"
 #include "renderer/render/render_job_progress.h"
 #include "renderer/scene/overrides.h"
+#include "renderer/render/memory_budget.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::render {
@@ -124,6 +125,7 @@ int runRenderJob(const RenderRequest& req) {
     const gl::ContextInfo& glinfo = context->info();
     gl::enableDebugOutput(req.gl.debug);
     checkGlLimits(first, params, glinfo);
+    checkMemoryBudget(first, info.name, params, &glinfo);  // exit 2 before any allocation
 
     // 3. Per-run GPU resources.
     const int width = first.image.width, height = first.image.height;

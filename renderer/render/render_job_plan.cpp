@@ -15,6 +15,7 @@
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
 #include "renderer/core/frame_spec.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/core/output_paths.h"
 
 namespace penumbra::render {
@@ -111,11 +112,15 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& s
               std::pair{p.preview, "--preview"}}) {
             if (path.empty()) continue;
             checkOutputPath(path, flag);  // no device, FIFO or folder replaced by the rename
-            auto [it, inserted] = seen.emplace(path, f);
+            // Compared as canonical paths: ./y.exr and y.exr are one file.
+            auto [it, inserted] = seen.emplace(outputIdentity(path), f);
+            if (!inserted && it->second == f)
+                throw InputError(std::string(flag) + ": '" + quoteText(path) +
+                                 "' is another output of frame " + std::to_string(f));
             if (!inserted)
                 throw InputError(std::string(flag) + ": frames " + std::to_string(it->second) +
-                                 " and " + std::to_string(f) + " would both write '" + path +
-                                 "' (use # in the pattern)");
+                                 " and " + std::to_string(f) + " would both write '" +
+                                 quoteText(path) + "' (use # in the pattern)");
             std::error_code ec;
             all_there = all_there && fs::exists(path, ec);
         }

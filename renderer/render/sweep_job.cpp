@@ -1,6 +1,8 @@
 // The sweep job: see sweep_job.h.
 #include "renderer/render/sweep_job.h"
 
+#include "renderer/render/memory_budget.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -60,7 +62,9 @@ void validate(Job& job, const SweepRequest& req) {
     if (!info)
         throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
                          quoteText(job.technique_name) + "'");
-    resolveParams(info->params, s.technique, req.scene.string() + ": technique");
+    checkMemoryBudget(s, job.technique_name,
+                      resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
+                      nullptr);
     job.hash = contentHash(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
                      PENUMBRA_VERSION);
 }
@@ -298,7 +302,7 @@ int runSweepJob(const SweepRequest& req) {
         ref_paths.push_back(path);
         const bool needed =
             !req.run_index || run_reference[static_cast<size_t>(*req.run_index - 1)] == i;
-        if (fs::exists(path) || !needed) continue;
+        if (!needed || output::isReadableExr(path)) continue;  // a truncated one is redone
         if (progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());
@@ -324,7 +328,7 @@ int runSweepJob(const SweepRequest& req) {
                 json old = scene::parseJsonText(
                     scene::readTextFile(record, record.string(), kMaxRecordBytes), record.string());
                 if (old.is_object() && old.value("settings_hash", "") == runs[i].hash &&
-                    fs::exists(req.out / old.value("exr", std::string("-"))))
+                    output::isReadableExr(req.out / old.value("exr", std::string("-"))))
                     entry = old;
             } catch (const InputError&) {
             } catch (const json::exception&) {

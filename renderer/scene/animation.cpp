@@ -3,8 +3,10 @@
 #include "renderer/scene/animation.h"
 
 #include <algorithm>
+#include <map>
 
 #include "renderer/core/frame_spec.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/scene/dotted_key.h"
 #include "renderer/scene/json_field.h"
 
@@ -31,14 +33,19 @@ AnimationTrack parseTrack(const Field& f, const nlohmann::json& doc) {
     if (!key.present()) key.fail("missing (the dotted key of the value to animate)");
     track.key = key.string();
     const auto parts = splitDottedKey(track.key);
-    if (!parts) key.fail("malformed key '" + track.key + "'");
+    if (!parts) key.fail("malformed key '" + quoteText(track.key) + "'");
     track.parts = *parts;
     if (track.parts[0] == "animation") key.fail("the animation block cannot be animated");
+    // The image's size and samples are fixed for a whole render (its buffers are made once).
+    if (track.parts[0] == "image")
+        key.fail(std::string("'") + quoteText(track.key) +
+                 "' cannot be animated (one image size per render)");
     const nlohmann::json* target = findAt(doc, track.parts);
-    if (!target) key.fail("'" + track.key + "' does not exist in the scene");
+    if (!target)
+        key.fail(std::string("'") + quoteText(track.key) + "' does not exist in the scene");
     const Field target_field(target, track.key, key.file());
     if (!target->is_number() && !(target_field.isNumberArray() && !target->empty()))
-        key.fail("'" + track.key + "' is " + describeType(*target) +
+        key.fail(std::string("'") + quoteText(track.key) + "' is " + describeType(*target) +
                  ", not a number or an array of numbers");
 
     const Field keys = f.member("keys");
@@ -59,7 +66,7 @@ AnimationTrack parseTrack(const Field& f, const nlohmann::json& doc) {
                                  std::to_string(track.frames.back()));
         const Field value = pair.element(1);
         if (!sameShape(value, *target))
-            value.fail("expected " + shapeOf(*target) + " like " + track.key + ", got " +
+            value.fail("expected " + shapeOf(*target) + " like " + quoteText(track.key) + ", got " +
                        (value.isNumberArray() ? std::to_string(value.json().size()) + " numbers"
                                               : describeType(value.json())));
         if (value.json().is_number())
@@ -86,8 +93,16 @@ Animation parseAnimation(const nlohmann::json& doc, const std::string& file) {
     }
     if (const Field tracks = f.member("tracks"); tracks.present()) {
         const std::size_t count = tracks.arraySize();
-        for (std::size_t i = 0; i < count; ++i)
+        std::map<std::vector<std::string>, std::size_t> animated;  // target -> its track
+        for (std::size_t i = 0; i < count; ++i) {
             animation.tracks.push_back(parseTrack(tracks.element(i), doc));
+            const auto [earlier, fresh] = animated.emplace(animation.tracks.back().parts, i);
+            if (!fresh)
+                tracks.element(i).member("key").fail(
+                    std::string("'") + quoteText(animation.tracks.back().key) +
+                    "' is animated by animation.tracks." + std::to_string(earlier->second) +
+                    " already (one track per value)");
+        }
     }
     return animation;
 }

@@ -2,12 +2,15 @@
 // bufferView and buffer references checked, every byte read proven inside its buffer.
 #include "renderer/scene/gltf_accessor.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace penumbra::scene {
 namespace {
 
 constexpr std::size_t kMaxAccessorElements = std::size_t{1} << 26;
+// Elements an accessor without a bufferView may declare (zeros no byte of the file holds).
+constexpr std::size_t kMaxZeroElements = std::size_t{1} << 16;
 
 constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
 constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
@@ -133,9 +136,11 @@ std::pair<const unsigned char*, std::size_t> viewBytes(const GltfDocument& doc, 
 
 // Reads accessor INDEX, calling STORE(element, component, value) for each value, sparse
 // substitutions included (elements without data are left to the caller's zeros).
-template <typename Store>
+// ALLOCATE() is called once every check has passed, before the first STORE: a count that its
+// buffer cannot hold is refused before anything is allocated for it.
+template <typename Allocate, typename Store>
 std::size_t readAccessor(const GltfDocument& doc, int index, const std::string& key,
-                         const Expected& expected, Store store) {
+                         const Expected& expected, Allocate allocate, Store store) {
     const tinygltf::Accessor& a = accessorAt(doc, index, key);
     const std::string where = "accessor " + std::to_string(index);
     bool allowed = false;
@@ -167,6 +172,7 @@ std::size_t readAccessor(const GltfDocument& doc, int index, const std::string& 
             doc.fail(key, where + ": needs " + std::to_string(end) + " bytes of bufferView " +
                               std::to_string(a.bufferView) + ", which has " +
                               std::to_string(length));
+        allocate();
         for (std::size_t i = 0; i < a.count; ++i) {
             const unsigned char* p = bytes + a.byteOffset + i * stride;
             for (int c = 0; c < components; ++c)
@@ -177,7 +183,10 @@ std::size_t readAccessor(const GltfDocument& doc, int index, const std::string& 
         doc.fail(key, where + ": bufferView " + std::to_string(a.bufferView) + " does not exist");
     }
 
-    if (!a.sparse.isSparse) return a.count;
+    if (!a.sparse.isSparse) {
+        allocate();
+        return a.count;
+    }
     const auto& sparse = a.sparse;
     const std::string skey = key + " (" + where + ".sparse)";
     if (sparse.count < 1 || static_cast<std::size_t>(sparse.count) > a.count)
@@ -196,6 +205,7 @@ std::size_t readAccessor(const GltfDocument& doc, int index, const std::string& 
         doc.fail(skey, "indices run past the end of their bufferView");
     if (std::uint64_t{voffset} + std::uint64_t{n} * element > vlength)
         doc.fail(skey, "values run past the end of their bufferView");
+    allocate();
     for (std::size_t k = 0; k < n; ++k) {
         const auto target =
             static_cast<std::size_t>(decode(ibytes + ioffset + k * isize, index_type, false));
@@ -216,37 +226,57 @@ const tinygltf::Accessor& accessorAt(const GltfDocument& doc, int index, const s
     if (index < 0 || static_cast<std::size_t>(index) >= doc.model.accessors.size())
         doc.fail(key, "accessor " + std::to_string(index) + " does not exist");
     const tinygltf::Accessor& a = doc.model.accessors[static_cast<std::size_t>(index)];
-    if (a.count > kMaxAccessorElements)  // checked before anything is allocated for it
-        doc.fail(key, "accessor " + std::to_string(index) + ": count " + std::to_string(a.count) +
-                          " too large (limit " + std::to_string(kMaxAccessorElements) + ")");
+    const std::string where = "accessor " + std::to_string(index);
+    // Checked before anything is allocated for it: the count must be backed by bytes.
+    if (a.count > kMaxAccessorElements)
+        doc.fail(key, where + ": count " + std::to_string(a.count) + " too large (limit " +
+                          std::to_string(kMaxAccessorElements) + ")");
+    if (a.bufferView < 0 && a.count > kMaxZeroElements)
+        doc.fail(key, where + ": declares " + std::to_string(a.count) +
+                          " elements but has no bufferView (at most " +
+                          std::to_string(kMaxZeroElements) + " zeros without one)");
     return a;
 }
 
 std::vector<glm::vec3> readVec3(const GltfDocument& doc, int index, const std::string& key) {
-    std::vector<glm::vec3> out(accessorAt(doc, index, key).count, glm::vec3(0.0f));
-    readAccessor(doc, index, key, {TINYGLTF_TYPE_VEC3, {kFloat}, false, "VEC3 float"},
+    const std::size_t count = accessorAt(doc, index, key).count;
+    std::vector<glm::vec3> out;
+    auto allocate = [&] {
+        if (out.size() != count) out.assign(count, glm::vec3(0.0f));
+    };
+    readAccessor(doc, index, key, {TINYGLTF_TYPE_VEC3, {kFloat}, false, "VEC3 float"}, allocate,
                  [&](std::size_t i, int c, double v) { out[i][c] = static_cast<float>(v); });
     return out;
 }
 
 std::vector<glm::vec2> readTexcoords(const GltfDocument& doc, int index, const std::string& key) {
-    std::vector<glm::vec2> out(accessorAt(doc, index, key).count, glm::vec2(0.0f));
+    const std::size_t count = accessorAt(doc, index, key).count;
+    std::vector<glm::vec2> out;
+    auto allocate = [&] {
+        if (out.size() != count) out.assign(count, glm::vec2(0.0f));
+    };
     readAccessor(doc, index, key,
                  {TINYGLTF_TYPE_VEC2,
                   {kFloat, kUByte, kUShort},
                   false,
                   "VEC2 float or normalized unsigned byte/short"},
+                 allocate,
                  [&](std::size_t i, int c, double v) { out[i][c] = static_cast<float>(v); });
     return out;
 }
 
 std::vector<std::uint32_t> readIndices(const GltfDocument& doc, int index, const std::string& key) {
-    std::vector<std::uint32_t> out(accessorAt(doc, index, key).count, 0u);
+    const std::size_t count = accessorAt(doc, index, key).count;
+    std::vector<std::uint32_t> out;
+    auto allocate = [&] {
+        if (out.size() != count) out.assign(count, 0u);
+    };
     readAccessor(doc, index, key,
                  {TINYGLTF_TYPE_SCALAR,
                   {kUByte, kUShort, kUInt},
                   true,
                   "SCALAR unsigned byte, short or int"},
+                 allocate,
                  [&](std::size_t i, int, double v) { out[i] = static_cast<std::uint32_t>(v); });
     return out;
 }

@@ -4,18 +4,102 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
+#include "renderer/core/memory_limit.h"
 #include "renderer/core/regular_file.h"
 
 namespace penumbra::scene {
 namespace {
+
+constexpr int kStripRows = 64;  // rows decoded per read: the most memory a lie in a header costs
+
 std::string oneLine(std::string why) {
     std::replace(why.begin(), why.end(), '\n', ' ');
-    return why.empty() ? "" : ": " + why;
+    return why.empty() ? "" : ": " + quoteText(why);
 }
+
+// Decodes INPUT's first subimage strip by strip into a buffer that grows with what decoded.
+FloatImage readOpened(OIIO::ImageInput& input, const std::string& label, int max_size,
+                      int channels) {
+    const OIIO::ImageSpec& spec = input.spec();
+    if (spec.width < 1 || spec.height < 1 || spec.depth != 1 || spec.nchannels < 1)
+        throw InputError(label + ": not a 2D image");
+    if (spec.width > max_size || spec.height > max_size)
+        throw InputError(label + ": image too large (" + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height) + ", limit " + std::to_string(max_size) + ")");
+    FloatImage image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.channels = std::min(channels, spec.nchannels);
+    const auto row =
+        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(image.channels);
+    requireMemory(saturatingProduct({row, static_cast<std::uint64_t>(spec.height), 4}), label,
+                  "decoding its " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                      " pixels");
+
+    // Tiled files are read a row of tiles at a time (the strip rounded up to whole tiles).
+    const int step = spec.tile_width > 0 && spec.tile_height > 0
+                         ? std::max(1, kStripRows / spec.tile_height) * spec.tile_height
+                         : kStripRows;
+    for (int y0 = 0; y0 < spec.height; y0 += step) {
+        const int y1 = std::min(spec.height, y0 + step);
+        image.pixels.resize(row * static_cast<std::size_t>(y1));
+        float* out = image.pixels.data() + row * static_cast<std::size_t>(y0);
+        const bool ok = spec.tile_width > 0
+                            ? input.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y0,
+                                               spec.y + y1, spec.z, spec.z + 1, 0, image.channels,
+                                               OIIO::TypeDesc::FLOAT, out)
+                            : input.read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0,
+                                                   image.channels, OIIO::TypeDesc::FLOAT, out);
+        if (!ok) throw InputError(label + ": cannot read pixels" + oneLine(input.geterror()));
+    }
+    input.close();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if (!std::isfinite(image.pixels[i])) {
+            const std::size_t pixel = i / static_cast<std::size_t>(image.channels);
+            throw InputError(label + ": non-finite pixel at (" +
+                             std::to_string(pixel % static_cast<std::size_t>(spec.width)) + ", " +
+                             std::to_string(pixel / static_cast<std::size_t>(spec.width)) + ")");
+        }
+    return image;
+}
+
+// OpenImageIO's PNG reader leaves libpng's warnings on stderr ("libpng warning: IDAT: CRC
+// error") before its own error: the message reaches us through geterror(), so the decoder's
+// stderr goes to /dev/null while it runs (loading is single-threaded).
+class QuietStderr {
+public:
+    QuietStderr() {
+        std::fflush(stderr);
+        saved_ = ::dup(STDERR_FILENO);
+        const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+        if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+        if (null >= 0) ::close(null);
+    }
+    ~QuietStderr() {
+        std::fflush(stderr);
+        if (saved_ >= 0) {
+            ::dup2(saved_, STDERR_FILENO);
+            ::close(saved_);
+        }
+    }
+    QuietStderr(const QuietStderr&) = delete;
+    QuietStderr& operator=(const QuietStderr&) = delete;
+
+private:
+    int saved_ = -1;
+};
+
 }  // namespace
 
 FloatImage readFloatImage(const std::filesystem::path& path, const std::string& label,
@@ -28,32 +112,20 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
         throw InputError(label + ": expected " + std::string(expected));
     requireRegularFile(path, label);
 
+    const QuietStderr quiet;
     auto input = OIIO::ImageInput::open(path.string());
     if (!input) throw InputError(label + ": cannot read image" + oneLine(OIIO::geterror()));
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width < 1 || spec.height < 1 || spec.depth != 1 || spec.nchannels < 1)
-        throw InputError(label + ": not a 2D image");
-    if (spec.width > max_size || spec.height > max_size)
-        throw InputError(label + ": image too large (" + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + ", limit " + std::to_string(max_size) + ")");
+    return readOpened(*input, label, max_size, channels);
+}
 
-    FloatImage image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.channels = std::min(channels, spec.nchannels);
-    const auto count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-    image.pixels.resize(count * static_cast<std::size_t>(image.channels));
-    if (!input->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw InputError(label + ": cannot read pixels" + oneLine(input->geterror()));
-    input->close();
-    for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        if (!std::isfinite(image.pixels[i])) {
-            const std::size_t pixel = i / static_cast<std::size_t>(image.channels);
-            throw InputError(label + ": non-finite pixel at (" +
-                             std::to_string(pixel % static_cast<std::size_t>(spec.width)) + ", " +
-                             std::to_string(pixel / static_cast<std::size_t>(spec.width)) + ")");
-        }
-    return image;
+FloatImage readFloatImageFromMemory(const unsigned char* bytes, std::size_t size,
+                                    std::string_view extension, const std::string& label,
+                                    int max_size, int channels) {
+    OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes), size);
+    const QuietStderr quiet;
+    auto input = OIIO::ImageInput::open("memory" + std::string(extension), nullptr, &proxy);
+    if (!input) throw InputError(label + ": cannot read image" + oneLine(OIIO::geterror()));
+    return readOpened(*input, label, max_size, channels);
 }
 
 }  // namespace penumbra::scene

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "renderer/core/error.h"
+#include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
 namespace {
@@ -166,45 +167,60 @@ nlohmann::json lightFitJson(const LightFit& fit, const FitSettings& s, int face_
 }
 
 LightFit lightFitFromJson(const nlohmann::json& j, const std::string& where) {
-    auto fail = [&](const std::string& key, const std::string& what) -> void {
-        throw InputError(where + ": " + key + ": " + what);
+    // Every value typed, finite and in range, each error naming its key (Field's messages).
+    constexpr double kMaxRadiance = 1e10;  // far above any sky or sun a map holds
+    constexpr double kFullSphere = 4.0 * 3.14159265358979;
+    const Field root(&j, "", where);
+    if (!j.is_object() || j.value("schema", nlohmann::json()) != "penumbra-lights")
+        root.member("schema").fail(
+            "expected \"penumbra-lights\" (a file written by penumbra fit-lights)");
+    auto inRange = [](const Field& f, double lo, double hi, const std::string& range) {
+        const double v = f.number();
+        if (!(v >= lo && v <= hi)) f.fail("expected a number in " + range);
+        return v;
     };
-    if (!j.is_object() || j.value("schema", "") != "penumbra-lights")
-        fail("schema", "expected \"penumbra-lights\" (a file written by penumbra fit-lights)");
-    if (!j.contains("lights") || !j["lights"].is_array()) fail("lights", "expected an array");
-    auto vec = [&](const nlohmann::json& v, const std::string& key) {
-        if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
-            !v[2].is_number())
-            fail(key, "expected 3 numbers");
-        return glm::vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+    auto needed = [](const Field& f) {
+        if (!f.present()) f.fail("missing");
+        return f;
+    };
+    auto unitVector = [](const Field& f) {
+        const glm::vec3 v = f.vec3();
+        if (!(glm::length(v) > 0.5f && glm::length(v) < 2.0f)) f.fail("expected a unit vector");
+        return v;
     };
     LightFit fit;
-    fit.total = j.value("total_energy", 0.0);
-    fit.captured = j.value("captured_share", 0.0);
-    for (size_t i = 0; i < j["lights"].size(); ++i) {
-        const auto& l = j["lights"][i];
-        const std::string key = "lights." + std::to_string(i);
-        if (!l.is_object()) fail(key, "expected an object");
+    if (const Field total = root.member("total_energy"); total.present())
+        fit.total = inRange(total, 0, 1e30, "[0, 1e30]");
+    if (const Field captured = root.member("captured_share"); captured.present())
+        fit.captured = inRange(captured, 0, 1, "[0, 1]");
+    const Field lights = root.member("lights");
+    if (!lights.present() || !lights.json().is_array()) lights.fail("expected an array");
+    const std::size_t count = lights.arraySize();
+    for (std::size_t i = 0; i < count; ++i) {
+        const Field l = lights.element(i);
+        if (!l.json().is_object()) l.fail("expected an object");
         FittedLight f;
-        f.direction = vec(l.value("direction", nlohmann::json()), key + ".direction");
-        f.right = vec(l.value("right", nlohmann::json()), key + ".right");
-        f.up = vec(l.value("up", nlohmann::json()), key + ".up");
-        const glm::vec3 radiance = vec(l.value("radiance", nlohmann::json()), key + ".radiance");
-        const auto& e = l.value("extent_deg", nlohmann::json());
-        if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number() ||
-            !(e[0].get<double>() > 0 && e[0].get<double>() < 180) ||
-            !(e[1].get<double>() > 0 && e[1].get<double>() < 180))
-            fail(key + ".extent_deg", "expected 2 angles in (0, 180)");
-        if (!(glm::length(f.direction) > 0.5f)) fail(key + ".direction", "expected a unit vector");
-        if (radiance.x < 0 || radiance.y < 0 || radiance.z < 0)
-            fail(key + ".radiance", "expected values >= 0");
+        f.direction = glm::normalize(unitVector(needed(l.member("direction"))));
+        f.right = needed(l.member("right")).vec3();
+        f.up = needed(l.member("up")).vec3();
+        const Field radiance_field = needed(l.member("radiance"));
+        const glm::vec3 radiance = radiance_field.vec3();
+        for (int c = 0; c < 3; ++c)
+            if (!(radiance[c] >= 0.0f && radiance[c] <= kMaxRadiance))
+                radiance_field.fail("expected 3 values in [0, 1e10]");
+        const Field extent = needed(l.member("extent_deg"));
+        const glm::vec2 e = extent.vec2();
+        if (!(e.x > 0 && e.x < 180) || !(e.y > 0 && e.y < 180))
+            extent.fail("expected 2 angles in (0, 180)");
         constexpr float kRad = 3.14159265358979f / 180.0f;
-        f.direction = glm::normalize(f.direction);
-        f.extent = {e[0].get<float>() * kRad, e[1].get<float>() * kRad};
-        f.solid_angle = l.value("solid_angle", 0.0);
-        if (!(f.solid_angle > 0)) fail(key + ".solid_angle", "expected a number > 0");
+        f.extent = {e.x * kRad, e.y * kRad};
+        const Field solid_angle = needed(l.member("solid_angle"));
+        f.solid_angle = solid_angle.number();
+        if (!(f.solid_angle > 0 && f.solid_angle <= kFullSphere))
+            solid_angle.fail("expected a number in (0, 4 pi]");
         f.energy = radiance * static_cast<float>(f.solid_angle);
-        f.share = l.value("energy_share", 0.0);
+        if (const Field share = l.member("energy_share"); share.present())
+            f.share = inRange(share, 0, 1, "[0, 1]");
         fit.lights.push_back(f);
     }
     return fit;

@@ -165,25 +165,27 @@ ShadowRole readShadow(const Field& f) {
 
 }  // namespace
 
+Object buildObject(const Field& o, std::size_t index, const SceneContext& context) {
+    o.expectObject(
+        {"name", "gltf", "plane", "box", "sphere", "transform", "matrix", "material", "shadow"});
+    Object object;
+    object.name = "object" + std::to_string(index);
+    if (const Field name = o.member("name"); name.present()) object.name = name.string();
+    const glm::vec4 color = readBaseColor(o.member("material"));
+    object.transform = readTransform(o);
+    object.shadow = readShadow(o.member("shadow"));
+    object.model = readShape(o, color, context);
+    return object;
+}
+
 std::vector<Object> buildObjects(const Field& objects, const SceneContext& context) {
     if (!objects.present()) objects.fail("missing (a scene needs at least one object)");
     const std::size_t count = objects.arraySize();
     if (count == 0) objects.fail("empty (a scene needs at least one object)");
     std::vector<Object> out;
     out.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Field o = objects.element(i);
-        o.expectObject({"name", "gltf", "plane", "box", "sphere", "transform", "matrix", "material",
-                        "shadow"});
-        Object object;
-        object.name = "object" + std::to_string(i);
-        if (const Field name = o.member("name"); name.present()) object.name = name.string();
-        const glm::vec4 color = readBaseColor(o.member("material"));
-        object.transform = readTransform(o);
-        object.shadow = readShadow(o.member("shadow"));
-        object.model = readShape(o, color, context);
-        out.push_back(std::move(object));
-    }
+    for (std::size_t i = 0; i < count; ++i)
+        out.push_back(buildObject(objects.element(i), i, context));
     return out;
 }
 

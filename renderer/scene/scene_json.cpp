@@ -131,6 +131,38 @@ std::filesystem::path resolveAsset(const SceneContext& context, const std::strin
     return p.is_absolute() ? p : context.folder / p;
 }
 
+std::vector<std::string> scenePartOf(const std::vector<std::string>& parts) {
+    if (parts.empty()) return {};
+    const std::string& top = parts[0];
+    if (top == "lights" || top == "objects")
+        return parts.size() >= 2 ? std::vector<std::string>{top, parts[1]}
+                                 : std::vector<std::string>{};
+    if (top == "camera" || top == "image" || top == "environment" || top == "technique")
+        return {top};
+    return {};
+}
+
+void checkScenePart(const nlohmann::json& value, const std::vector<std::string>& part,
+                    const SceneContext& context) {
+    std::string key;
+    for (const std::string& p : part) key = joinKey(key, p);
+    const Field f(&value, key, context.file);
+    const std::string& top = part.at(0);
+    if (top == "camera") {
+        (void)readCamera(f);
+    } else if (top == "image") {
+        (void)readImage(f, context.max_image_size);
+    } else if (top == "environment") {
+        (void)readEnvironment(f, context);
+    } else if (top == "technique") {
+        (void)readTechnique(f);
+    } else if (top == "lights") {
+        (void)readLight(f);
+    } else if (top == "objects") {
+        (void)buildObject(f, static_cast<std::size_t>(std::stoul(part.at(1))), context);
+    }
+}
+
 Scene buildScene(const nlohmann::json& doc, const SceneContext& context) {
     const Field root(&doc, "", context.file);
     root.expectObject({"format", "name", "camera", "image", "lights", "environment", "objects",

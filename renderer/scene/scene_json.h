@@ -27,8 +27,18 @@ struct SceneContext {
 // Throws InputError("<file>: <dotted key>: <what is wrong>").
 Scene buildScene(const nlohmann::json& doc, const SceneContext& context);
 
-// The "objects" array (object_json.cpp).
+// The "objects" array, and its element INDEX (object_json.cpp).
 std::vector<Object> buildObjects(const Field& objects, const SceneContext& context);
+Object buildObject(const Field& object, std::size_t index, const SceneContext& context);
+
+// The top-level block that holds dotted key PARTS and checks on its own: ["camera"], ["image"],
+// ["environment"], ["technique"], ["lights", "N"] or ["objects", "N"] (empty for other keys).
+std::vector<std::string> scenePartOf(const std::vector<std::string>& parts);
+
+// Checks VALUE as the block at PART (scenePartOf's result) as buildScene would, alone: the
+// blocks' checks do not depend on each other. Throws InputError like buildScene.
+void checkScenePart(const nlohmann::json& value, const std::vector<std::string>& part,
+                    const SceneContext& context);
 
 // PATH resolved against the scene's folder when relative.
 std::filesystem::path resolveAsset(const SceneContext& context, const std::string& path);

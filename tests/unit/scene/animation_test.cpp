@@ -111,9 +111,12 @@ TEST(Animation, RejectionsNameTheTrack) {
          "animation.tracks.1.keys.1: at frame 10: lights.0.intensity: must be >= 0"},
         {R"([{"key": "objects.1.sphere.radius", "keys": [[0, 1], [4, 0]]}])",
          "animation.tracks.0.keys.1: at frame 4: objects.1.sphere.radius: must be > 0"},
-        // Values only valid at the keys (integers, here) fail between them.
+        // The image's size and samples are one per render: animating them is refused.
         {R"([{"key": "image.width", "keys": [[0, 64], [10, 65]]}])",
-         "animation.tracks.0: between keys 0 and 1 (frame 5): image.width: expected an integer"},
+         "animation.tracks.0.key: 'image.width' cannot be animated (one image size per render)"},
+        // One track per value.
+        {R"([{"key": "camera.fov_y", "keys": [[1, 30]]}, {"key": "camera.fov_y", "keys": [[1, 31]]}])",
+         "animation.tracks.1.key: 'camera.fov_y' is animated by animation.tracks.0 already"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.tracks);
