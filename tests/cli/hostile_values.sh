@@ -30,8 +30,8 @@ env_bad share.json "lights.0.energy_share: expected a number, got an array$"
 expect_exit 2 "^penumbra: --timings: 'y.exr' is another output of frame 1$" -- \
     "$PENUMBRA" render "$S" -f 1 -o ./y.exr --timings y.exr
 mkdir -p sub
-expect_exit 2 "^penumbra: --preview: 'sub/../y.exr' is another output of frame 1$" -- \
-    "$PENUMBRA" render "$S" -f 1 -o y.exr --preview sub/../y.exr
+expect_exit 2 "^penumbra: --timings: 'sub/../y.exr' is another output of frame 1$" -- \
+    "$PENUMBRA" render "$S" -f 1 -o y.exr --timings sub/../y.exr
 [ ! -e y.exr ] || fail "a refused render left output"
 
 # png_budget_map_corrupt: a PNG whose data is damaged printed a libpng line first.

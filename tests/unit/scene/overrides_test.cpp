@@ -87,7 +87,7 @@ TEST(Overrides, ValuesAreValidatedLikeTheFile) {
     expectMessage(inputErrorOf([] {
                       test::loadDoc(test::minimalScene(), {{"camera.fvo", "20"}});
                   }),
-                  path + ": camera: unknown key 'fvo'");
+                  "-D camera.fvo: unknown key 'fvo'");  // the flag that made it, named
     const SceneSource source = test::loadDoc(test::minimalScene(), {{"camera.fov_y", "35"}});
     EXPECT_EQ(source.at(0).camera.fov_y, 35.0f);
     EXPECT_EQ(source.document()["camera"]["fov_y"], 35);  // the document after overrides

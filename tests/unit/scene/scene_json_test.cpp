@@ -92,8 +92,8 @@ const std::vector<Rejection>& rejections() {
         {"format type", [](json& d) { d["format"] = 1; },
          "format: expected a string, got a number"},
         {"unknown top key", [](json& d) { d["camra"] = json::object(); },
-         "unknown key 'camra' (allowed: format, name, camera, image, lights, environment, objects, "
-         "technique, animation)"},
+         "unknown key 'camra' (did you mean 'camera'? allowed: format, name, camera, image, lights, "
+         "environment, objects, technique, animation)"},
         {"name type", [](json& d) { d["name"] = 5; }, "name: expected a string"},
         {"name empty", [](json& d) { d["name"] = ""; }, "name: empty name"},
         {"camera type", [](json& d) { d["camera"] = json::array(); },
@@ -220,9 +220,8 @@ const std::vector<Rejection>& rejections() {
         {"object two shapes", [](json& d) { d["objects"][0]["box"] = json::object(); },
          "objects.0: has both 'plane' and 'box' (one shape per object)"},
         {"object unknown key", [](json& d) { d["objects"][1]["transfrom"] = json::object(); },
-         "objects.1: unknown key 'transfrom' (allowed: name, gltf, plane, box, sphere, transform, "
-         "matrix, "
-         "material, shadow)"},
+         "objects.1: unknown key 'transfrom' (did you mean 'transform'? allowed: name, gltf, plane, "
+         "box, sphere, transform, matrix, material, shadow)"},
         {"object name type", [](json& d) { d["objects"][1]["name"] = 3; },
          "objects.1.name: expected a string"},
         {"plane size",
