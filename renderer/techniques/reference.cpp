@@ -1,5 +1,5 @@
 // `reference`: N x N stratified, jittered samples on the light, one hard shadow map each,
-// averaged: the ground truth every other technique is measured against. Maps are rendered in
+// averaged: the papers' map-based baseline (`exact` is the ground truth). Maps are rendered in
 // batches through a texture array, so memory stays bounded up to N = 32 (1024 maps).
 #include <array>
 #include <cstdint>
@@ -66,7 +66,7 @@ private:
 
 const TechniqueInfo kReferenceTechnique = {
     "reference",
-    "N x N stratified jittered light samples, one shadow map each, averaged: the ground truth",
+    "N x N stratified jittered light samples, one shadow map each, averaged: the papers' baseline",
     kReferenceParams,
     [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); },
     sampledEnvironmentLights};

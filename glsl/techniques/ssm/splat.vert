@@ -12,6 +12,7 @@ uniform vec2 u_ssm_lo;        // soft-shadow-map window at distance 1
 uniform vec2 u_ssm_size;
 uniform int u_ssm_res;        // soft-shadow-map texels per side
 uniform float u_receiver_far; // farthest receiver: the virtual plane of the penumbra extent
+uniform int u_layer;  // the receiver layer drawn: micro-patches are counted in layer 0 only
 
 struct Patch {
     uint texel;  // y * map size + x
@@ -24,12 +25,11 @@ uniform vec2 u_occ_texel;    // one texel of it
 
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
-layout(binding = 2) uniform sampler2D u_receiver_max;
+layout(binding = 2) uniform sampler2DArray u_receiver_max;  // per receiver layer
 #endif
 uniform float u_receiver_near;
 uniform float u_receiver_range;
 
-uniform int u_layer;  // the receiver layer drawn: micro-patches are counted in layer 0 only
 
 // Self-shadowing (several receiver layers): the object of each occluder texel, and the receiver
 // layers' depths and objects. A patch shadows receivers of its own object only where that
@@ -69,12 +69,13 @@ void main() {
     vec2 span = max(px.zw - px.xy, vec2(1.0));
     int levels = textureQueryLevels(u_receiver_max);
     int level = min(int(ceil(log2(max(span.x, span.y)))), levels - 1);
-    ivec2 last = textureSize(u_receiver_max, level) - 1;
+    ivec2 last = textureSize(u_receiver_max, level).xy - 1;
     ivec2 base = min(ivec2(px.xy) >> level, last);
     float dmax = -1.0;
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x)
-            dmax = max(dmax, texelFetch(u_receiver_max, min(base + ivec2(x, y), last), level).r);
+            dmax = max(dmax, texelFetch(u_receiver_max, ivec3(min(base + ivec2(x, y), last), u_layer),
+                                        level).r);
     float zmax = u_receiver_near + dmax * u_receiver_range;
     if (dmax < 0.0 || zmax <= z || px.z <= px.x || px.w <= px.y) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);

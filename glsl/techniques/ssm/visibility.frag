@@ -2,9 +2,10 @@
 // `ssm` visibility: each camera pixel of a receiver is projected from the light's centre into
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
-// depth matches the pixel's; a pixel no layer matches (a surface facing away from the light's
-// centre, or beyond the last layer) sees the light's part above its horizon. Pixels of objects
-// that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
+// depth matches the pixel's. A pixel no layer matches sees the light's part above its horizon
+// when it faces away from the light's centre (no layer holds such surfaces); is in shadow when
+// it lies beyond a full stack of layers (behind that many light-facing surfaces); else takes
+// the nearest layer. Pixels of objects that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
 // used (of the texel weighing most; -1 where none).
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
@@ -108,15 +109,39 @@ void main() {
         // Match within 8 soft-map texels of the receiver's slope-free footprint plus the bias.
         float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
-        if (!layeredOcclusion(uv, (z - u_near) / u_range, tol, occlusion, layer)) {
+        float dp = (z - u_near) / u_range;
+        if (!layeredOcclusion(uv, dp, tol, occlusion, layer)) {
             vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-            vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
-                                                  u_light_size.y * u_light_up);
-            float share = lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
-                                                 u_light_size.y * u_light_up, pos.xyz, n);
-            o_visibility = vec4(share, 0.0, 0.0, 0.0);
-            o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
-            return;
+            int deepest = -1, nearest = -1;
+            float deepest_d = 0.0, nearest_diff = 2.0;
+            ivec2 res = textureSize(u_layers, 0).xy;
+            ivec2 q = clamp(ivec2(uv * vec2(res)), ivec2(0), res - 1);
+            for (int k = 0; k < u_layer_count; ++k) {
+                float dk = texelFetch(u_layers, ivec3(q, k), 0).r;
+                if (dk >= 1.0) break;
+                deepest = k;
+                deepest_d = dk;
+                if (abs(dk - dp) < nearest_diff) {
+                    nearest_diff = abs(dk - dp);
+                    nearest = k;
+                }
+            }
+            if (dot(n, u_light_centre - pos.xyz) <= 0.0 || nearest < 0) {
+                vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
+                                                      u_light_size.y * u_light_up);
+                float share = lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
+                                                     u_light_size.y * u_light_up, pos.xyz, n);
+                o_visibility = vec4(share, 0.0, 0.0, 0.0);
+                o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
+                return;
+            }
+            if (deepest == u_layer_count - 1 && dp > deepest_d) {
+                occlusion = 1.0;  // behind every layer
+                layer = u_layer_count;
+            } else {
+                occlusion = occlusionOf(nearest, q);
+                layer = nearest;
+            }
         }
     }
     o_visibility = vec4(1.0 - clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);

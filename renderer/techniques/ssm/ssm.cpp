@@ -140,8 +140,9 @@ public:
                 gl::buildProgram("ssm receiver max", {"techniques/ssm/receiver_max.comp"});
             receiver_levels_ = 1;
             while ((ssm_size_ >> receiver_levels_) > 0) ++receiver_levels_;
-            receiver_max_ = gl::createTexture(GL_TEXTURE_2D, "ssm receiver max pyramid");
-            glTextureStorage2D(receiver_max_.id(), receiver_levels_, GL_R32F, ssm_size_, ssm_size_);
+            receiver_max_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "ssm receiver max pyramids");
+            glTextureStorage3D(receiver_max_.id(), receiver_levels_, GL_R32F, ssm_size_, ssm_size_,
+                               layers_);
             glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MIN_FILTER,
                                 GL_NEAREST_MIPMAP_NEAREST);
             glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -215,20 +216,24 @@ public:
     }
 
 private:
-    // The farthest-receiver pyramid of the receiver map (receiver_max.comp), level by level.
+    // The farthest-receiver pyramid of each used receiver layer (receiver_max.comp), level by
+    // level: a splat quad into layer k is culled where layer k has no receiver under it.
     void buildReceiverMax() {
         glUseProgram(max_program_.id());
-        for (int level = 0; level < receiver_levels_; ++level) {
-            const int size = std::max(ssm_size_ >> level, 1);
-            glBindTextureUnit(0, receiver_max_.id());
-            glBindTextureUnit(1, receiver_layers_->depth.id());
-            gl::setUniform(max_program_, "u_layer_count", layers_);
-            glBindImageTexture(0, receiver_max_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-            gl::setUniform(max_program_, "u_from_depth", level == 0 ? 1 : 0);
-            gl::setUniform(max_program_, "u_source_level", level - 1);
-            const GLuint groups = static_cast<GLuint>((size + 7) / 8);
-            glDispatchCompute(groups, groups, 1);
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glBindTextureUnit(0, receiver_max_.id());
+        glBindTextureUnit(1, receiver_layers_->depth.id());
+        for (int layer = 0; layer < used_layers_; ++layer) {
+            gl::setUniform(max_program_, "u_layer", layer);
+            for (int level = 0; level < receiver_levels_; ++level) {
+                const int size = std::max(ssm_size_ >> level, 1);
+                glBindImageTexture(0, receiver_max_.id(), level, GL_FALSE, layer, GL_WRITE_ONLY,
+                                   GL_R32F);
+                gl::setUniform(max_program_, "u_from_depth", level == 0 ? 1 : 0);
+                gl::setUniform(max_program_, "u_source_level", level - 1);
+                const GLuint groups = static_cast<GLuint>((size + 7) / 8);
+                glDispatchCompute(groups, groups, 1);
+                glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            }
         }
         glUseProgram(0);
     }
