@@ -1,0 +1,114 @@
+// The conformance label: every technique at its defaults on 12 scenes of the conformance corpus
+// (scenes/conformance) at 128 x 96, against `exact` (N = 16), in process. Each run's worst
+// shadow-region MAE over the receiving objects must stay within its bound; the full corpus at
+// 320 x 240, with contact sheets, is scripts/conformance.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "../gl/gl_test_env.h"
+#include "renderer/scene/json_file.h"
+
+using penumbra::output::Image;
+using penumbra::testing::channel;
+
+namespace {
+
+const std::vector<std::string> kScenes = {
+    "box_resting",        "spheres_three_sizes", "duck_resting",  "light_size_0.25",
+    "light_aspect_1to16", "light_tilt_45",       "bar_grid",      "under_table",
+    "two_lights",         "split_roles",         "stacked_boxes", "tilted_receiver"};
+
+struct Run {
+    std::string label, technique;
+    double bound;     // worst receiver shadow-region MAE allowed over the 12 scenes
+    const char* why;  // where the bound comes from
+};
+
+// Bounds: the conformance issue's targets (at 320 x 240) where a run meets them here; where it
+// does not, the measured worst of this version with a margin of 15 %, so that the label catches
+// regressions while the fixes that issue asks for are pending. Measured worst in the comment.
+const std::vector<Run> kRuns = {
+    {"reference", R"({"name": "reference"})", 0.062,
+     "measured 0.0533 (spheres_three_sizes: normal offset lights grazing object points); "
+     "target 0.015"},
+    {"adaptive", R"({"name": "adaptive"})", 0.236,
+     "measured 0.2049 (light_aspect_1to16: too few maps, ghost shadows); target 0.02"},
+    {"ssm", R"({"name": "ssm"})", 0.247,
+     "measured 0.2145 (duck_resting: object self-shadowing); target 0.05 floor, 0.07 receivers"},
+    {"bitmask", R"({"name": "bitmask"})", 0.154,
+     "measured 0.1338 (bar_grid: thin casters); target 0.05"},
+    {"css", R"({"name": "css"})", 0.271, "measured 0.2355 (tilted_receiver); target 0.06"},
+};
+
+std::string scenePath(const std::string& name) {
+    return "../../../scenes/conformance/" + name + ".json";
+}
+
+// Indices of SCENE's objects that receive shadows (role both, the default, or receiver).
+std::vector<int> receivers(const std::string& name) {
+    const auto doc = penumbra::scene::parseJsonText(
+        penumbra::scene::readTextFile(
+            std::string(PENUMBRA_SOURCE_DIR) + "/scenes/conformance/" + name + ".json", name,
+            std::size_t(1) << 20),
+        name);
+    std::vector<int> ids;
+    for (size_t i = 0; i < doc["objects"].size(); ++i) {
+        const std::string role = doc["objects"][i].value("shadow", "both");
+        if (role == "both" || role == "receiver") ids.push_back(int(i));
+    }
+    return ids;
+}
+
+// Shadow-region MAE (either below 0.999) of IMG's visibility against EXACT's over IDS.
+double receiverMae(const Image& exact, const Image& img, const std::vector<int>& ids) {
+    const auto& ve = channel(exact, "visibility");
+    const auto& v = channel(img, "visibility");
+    const auto& id = channel(exact, "id");
+    double sum = 0;
+    long n = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        if (std::find(ids.begin(), ids.end(), int(id[i])) == ids.end()) continue;
+        if (ve[i] >= 0.999f && v[i] >= 0.999f) continue;
+        sum += std::fabs(v[i] - ve[i]);
+        ++n;
+    }
+    return n > 0 ? sum / n : 0.0;
+}
+
+Image render(const std::string& scene, const std::string& technique) {
+    return penumbra::testing::renderScene(
+        scenePath(scene),
+        {{"image.width", "128"}, {"image.height", "96"}, {"technique", technique}});
+}
+
+}  // namespace
+
+TEST(Conformance, EveryTechniqueWithinItsBoundOnTheSubset) {
+    std::map<std::string, std::pair<double, std::string>> worst;  // label -> (mae, scene)
+    for (const auto& scene : kScenes) {
+        const Image exact = render(scene, R"({"name": "exact", "samples": 16})");
+        const auto ids = receivers(scene);
+        std::printf("%-20s", scene.c_str());
+        for (const auto& run : kRuns) {
+            const double mae = receiverMae(exact, render(scene, run.technique), ids);
+            std::printf(" %s %.4f", run.label.c_str(), mae);
+            auto& w = worst[run.label];
+            if (mae >= w.first) w = {mae, scene};
+        }
+        std::printf("\n");
+    }
+    for (const auto& run : kRuns) {
+        const auto& [mae, scene] = worst[run.label];
+        std::printf("%-10s worst %.4f (%s), bound %.4f: %s\n", run.label.c_str(), mae,
+                    scene.c_str(), run.bound, run.why);
+        EXPECT_LE(mae, run.bound) << run.label << " on " << scene;
+    }
+}
