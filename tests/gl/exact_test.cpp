@@ -336,12 +336,8 @@ TEST(ExactGL, EnvironmentAgreesWithTheShadowMapEnvironmentReference) {
         "environment.json",
         {{"technique", R"({"name": "reference", "env_samples": 512, "map_size": 256})"}});
     const Errors e = errorsAgainst(exact, ref, 0);
-    const auto& re = channel(exact, "R");
-    const auto& rr = channel(ref, "R");
-    const auto& id = channel(exact, "id");
-    double se = 0, sr = 0;
-    for (size_t i = 0; i < re.size(); ++i)
-        if (id[i] == 0) se += re[i], sr += rr[i];
+    const double se = penumbra::testing::sumOverObject(exact, "R", 0);
+    const double sr = penumbra::testing::sumOverObject(ref, "R", 0, &exact);
     std::printf(
         "environment, floor: reference (512 directions) against exact: mean beauty "
         "%+.3f %%, beauty error %.4f, visibility error %.4f\n",

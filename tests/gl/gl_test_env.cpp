@@ -66,6 +66,16 @@ output::Image renderSceneWith(const std::string& name,
     return render(name, overrides, 0, nullptr, configure);
 }
 
+double sumOverObject(const output::Image& img, const std::string& name, int id,
+                     const output::Image* ids) {
+    const auto& v = channel(img, name);
+    const auto& of = channel(ids ? *ids : img, "id");
+    double sum = 0;
+    for (size_t i = 0; i < v.size(); ++i)
+        if (of[i] == float(id)) sum += v[i];
+    return sum;
+}
+
 double pixelIrradiance(const scene::RectLight& light, const output::Image& img, size_t i) {
     const auto c = light.corners();
     const std::array<glm::dvec3, 4> corners = {glm::dvec3(c[0]), glm::dvec3(c[1]), glm::dvec3(c[2]),

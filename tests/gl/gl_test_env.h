@@ -53,6 +53,11 @@ double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& tr
 // Exact unshadowed irradiance of LIGHT (double precision) at pixel I of IMG, from its P and N.
 double pixelIrradiance(const scene::RectLight& light, const output::Image& img, size_t i);
 
+// The sum of channel NAME of IMG over the pixels of object ID (by IDS's `id` channel; IMG's
+// own when IDS is null).
+double sumOverObject(const output::Image& img, const std::string& name, int id,
+                     const output::Image* ids = nullptr);
+
 // The largest |a[i] - b[i]| of two equally long channels.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
 
