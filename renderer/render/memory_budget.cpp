@@ -27,8 +27,9 @@ std::string square(int size) {
     return std::to_string(size) + "^2";
 }
 
-// Shadow-map techniques' terms (hard, reference, adaptive, ssm, bitmask, css).
-void techniqueTerms(std::string_view t, const Params& p, std::vector<MemoryTerm>& out) {
+// Each technique's own terms (hard, reference, adaptive, ssm, bitmask, css, exact) for an
+// image of PIXELS.
+void techniqueTerms(std::string_view t, const Params& p, u64 pixels, std::vector<MemoryTerm>& out) {
     const int map = intOr(p, "map_size", 0);
     const u64 m = static_cast<u64>(map);
     if (t == "hard") {
@@ -54,10 +55,15 @@ void techniqueTerms(std::string_view t, const Params& p, std::vector<MemoryTerm>
         const int ssm = intOr(p, "ssm_size", 256);
         const u64 s = static_cast<u64>(ssm);
         const u64 sides = p.json().value("two_sided", false) ? 2 : 1;
-        out.push_back({"technique.map_size", "the occluder maps and micro-patch lists",
-                       product({m, m, 4 + 8, sides})});
-        out.push_back({"technique.ssm_size", "the soft shadow and receiver maps",
-                       product({s, s, 4 * sides + 4 + 6})});
+        const u64 layers = static_cast<u64>(intOr(p, "layers", 4));
+        out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
+                       product({m, m, 4 + 4 + 8, sides})});
+        // Per receiver layer: soft shadow maps (per side), depth and id, the farthest-receiver
+        // pyramid (4/3 of a float); plus the peeling's scratch depth and ids.
+        out.push_back({"technique.layers",
+                       "the soft shadow maps and receiver layers (" + square(ssm) + " x " +
+                           std::to_string(layers) + ")",
+                       product({s, s, (4 * sides + 4 + 4 + 6) * layers + 8})});
     } else if (t == "bitmask") {
         const u64 ysm = static_cast<u64>(intOr(p, "ysm_size", 256));
         out.push_back({"technique.map_size", "the light depth map and its depth ranges",
@@ -76,6 +82,11 @@ void techniqueTerms(std::string_view t, const Params& p, std::vector<MemoryTerm>
             out.push_back({"technique.order", "the summed-area tables",
                            product({m + 1, m + 1, 16, layers}), true});
         out.push_back({"technique.map_size", "the shadow map", product({m, m, 4})});
+    } else if (t == "exact") {
+        // The G-buffer read back (position and normal, 32 bytes a pixel) and the layer it
+        // computes (16), on the CPU.
+        out.push_back({"image.width", "exact's readback and ray results (48 bytes a pixel)",
+                       product({pixels, 48})});
     }
 }
 
@@ -101,7 +112,7 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view t
         out.push_back({"image.samples", "the rest of the sample G-buffer",
                        product({pixels, samples, 32 + 1})});
     }
-    techniqueTerms(technique, params, out);
+    techniqueTerms(technique, params, pixels, out);
     return out;
 }
 
