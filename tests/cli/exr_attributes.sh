@@ -80,7 +80,23 @@ PY
 # Two lights: visibility.0 and visibility.1 beside visibility.
 "$PENUMBRA" render "$PENUMBRA_SOURCE_DIR/tests/data/gl/two_lights.json" -t hard --size 64x48 \
     -o two.exr --quiet
-oiiotool --info -v two.exr >two.txt
-grep -q "channel list:.*visibility\.0.*visibility\.1\|channel list:.*visibility\.1.*visibility\.0" two.txt ||
-    fail "per-light visibility channels missing: $(grep 'channel list' two.txt)"
+oiiotool --info:format=xml -v two.exr | sed -n '/^<ImageSpec/,$p' >two.xml
+oiiotool --dumpdata two.exr >two.txt
+python3 - two.xml two.txt <<'PY' || fail "per-light visibility"
+import re, sys, xml.etree.ElementTree as ET
+names = [c.text for c in ET.parse(sys.argv[1]).getroot().iter("channelname")]
+assert "visibility.0" in names and "visibility.1" in names and "visibility.2" not in names, names
+i, a, b = names.index("visibility"), names.index("visibility.0"), names.index("visibility.1")
+shadowed = 0
+for line in open(sys.argv[2]):
+    m = re.match(r"\s*Pixel \((\d+), (\d+)\): (.*)", line)
+    if not m:
+        continue
+    v = [float(t) for t in m.group(3).split()]
+    # The irradiance-weighted mean of the lights' visibilities lies between them.
+    assert min(v[a], v[b]) - 1e-4 <= v[i] <= max(v[a], v[b]) + 1e-4, (m.group(1), m.group(2), v[i], v[a], v[b])
+    assert 0 <= v[a] <= 1 and 0 <= v[b] <= 1
+    shadowed += min(v[a], v[b]) < 0.5
+assert shadowed > 0, "no pixel is shadowed from either light"
+PY
 echo "exr_attributes ok"
