@@ -1,5 +1,7 @@
 // `penumbra compare REF.exr TEST.exr`: golden-image diff with OpenImageIO idiff's thresholds,
-// summary and exit codes (0 pass, 1 warn, 2 fail, 3 size or channel mismatch, 4 unreadable).
+// summary and exit codes (0 pass, 1 warn, 2 fail, 3 cannot compare, 4 file error, 5 usage).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -13,20 +15,23 @@
 #include "renderer/core/json_bounds.h"
 #include "renderer/output/compare.h"
 #include "renderer/output/exr.h"
+#include "renderer/output/heatmap.h"
 
 namespace penumbra::cli {
 
 namespace {
 
-constexpr int kExitMismatch = 3;
-constexpr int kExitUnreadable = 4;
+constexpr int kExitMismatch = 3;    // idiff's "different size": cannot compare
+constexpr int kExitUnreadable = 4;  // idiff's file error: unreadable input, unwritable --diff
+constexpr int kExitUsage = 5;       // bad command line (idiff has none of its own)
 
 constexpr const char* kCompareUsage = R"(usage: penumbra compare REF.exr TEST.exr [options]
 
 Compares TEST against the reference REF like OpenImageIO's idiff. A pixel fails when any
 compared channel differs by more than --fail; the result is FAILURE when more than
 --failpercent % of the pixels fail or any difference exceeds --hardfail, else WARNING by the
-same rule with --warn and --warnpercent, else PASS. NaN or inf in either image always fails.
+same rule with --warn and --warnpercent, else PASS. NaN, or inf in one image but not the same inf in the other, always fails (the background's
+Z = +inf equals itself).
 
 options:
   --fail A           per-channel difference a pixel may have before it fails (default 1e-6)
@@ -36,24 +41,44 @@ options:
   --hardfail A       any difference above A fails outright (default: none)
   --channels C,C,..  channels to compare, e.g. R,G,B or visibility (default: all of REF's)
   --ids N,N,..       compare only pixels whose `id` in REF (the object's index in the scene's
-                     `objects`) is listed, e.g. the receivers; counts and means are over them
+                     `objects`) is listed, e.g. the receivers; counts and means are over them;
+                     ids that select no pixel cannot be compared (exit 3)
   --diff OUT.exr     write |REF - TEST| of the compared channels (written even on failure)
-  --json             print only a JSON object with every metric on stdout
+  --diff OUT.png     write a heatmap of the largest difference per pixel with a colour bar
+                     below it (left 0, right the scale)
+  --diff-scale K     the difference that maps to white in a .png diff (default: the largest
+                     finite difference)
+  --json             print only a JSON object on stdout: every metric, or an `error` field
+                     (and `exit`) when it cannot compare
+  --no-fail          metrics only: exit 0 whatever the verdict, unless it cannot compare
   --memory-limit SIZE  refuse images whose pixels would need more (8G, 512M; default half
                      the physical memory); exit 4
   --help             print this help
   (idiff's spellings -fail, -failpercent, -warn, -warnpercent, -hardfail also work)
 
-exit status: 0 pass, 1 warning, 2 failure or bad command line, 3 size or channel mismatch,
-4 unreadable file.
+exit status (0-4 as idiff's): 0 pass, 1 warning, 2 failure, 3 cannot compare (size or
+channel mismatch, --ids selecting no pixel), 4 file error (unreadable input, --diff not
+written), 5 bad command line. With --no-fail, 1 and 2 become 0.
 )";
 
 struct CompareArgs {
     std::string ref, test;
     output::CompareOptions options;
     std::string diff;
+    bool diffPng = false;             // --diff ends in .png: a heatmap, else an EXR
+    std::optional<double> diffScale;  // --diff-scale
     bool json = false;
+    bool noFail = false;
 };
+
+// True when PATH ends in EXT, ignoring case (EXT is lower case, with its dot).
+bool hasExtension(const std::string& path, const std::string& ext) {
+    if (path.size() < ext.size()) return false;
+    for (size_t i = 0; i < ext.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i])
+            return false;
+    return true;
+}
 
 double parseThreshold(const ArgCursor& c, std::string_view flag, const std::string& text) {
     const double v = parseDouble(c, flag, text);
@@ -112,9 +137,18 @@ CompareArgs parseArgs(const Args& args) {
                 a.options.ids.push_back(parseInt(c, "--ids", id, 0, 1 << 30));
         } else if ((v = c.option("", "--diff"))) {
             if (v->empty()) c.fail("--diff: expected a file name");
+            if (!hasExtension(*v, ".exr") && !hasExtension(*v, ".png"))
+                c.fail("--diff: '" + quoteText(*v) + "' must end in .exr or .png");
             a.diff = *v;
+            a.diffPng = hasExtension(*v, ".png");
+        } else if ((v = c.option("", "--diff-scale"))) {
+            a.diffScale = parseDouble(c, "--diff-scale", *v);
+            if (!(*a.diffScale > 0))
+                c.fail("--diff-scale: must be > 0, got '" + quoteText(*v) + "'");
         } else if (c.flag("", "--json")) {
             a.json = true;
+        } else if (c.flag("", "--no-fail")) {
+            a.noFail = true;
         } else if (parseMemoryLimitFlag(c)) {
         } else if (auto p = c.positional()) {
             if (files.size() == 2)
@@ -125,6 +159,7 @@ CompareArgs parseArgs(const Args& args) {
         }
     }
     if (files.size() != 2) c.fail("expected REF.exr and TEST.exr (see --help)");
+    if (a.diffScale && !a.diffPng) c.fail("--diff-scale: needs a --diff OUT.png");
     a.ref = files[0];
     a.test = files[1];
     return a;
@@ -182,6 +217,35 @@ void printSummary(const CompareArgs& a, const output::CompareResult& r) {
     }
 }
 
+
+// When compare cannot compare: the one line MESSAGE on stderr and, with --json, a JSON object
+// holding it as `error` on stdout. Returns CODE.
+int cannotCompare(bool json, const std::string& ref, const std::string& test, int code,
+                  const std::string& message) {
+    std::fprintf(stderr, "penumbra: %s\n", message.c_str());
+    if (json) {
+        nlohmann::json j = {{"error", message}, {"exit", code}};
+        if (!ref.empty()) j["reference"] = ref;
+        if (!test.empty()) j["test"] = test;
+        std::cout << j.dump(2) << std::endl;
+    }
+    return code;
+}
+
+// Writes the --diff file: an EXR of the differences, or a PNG heatmap. Returns the scale a
+// heatmap used (0 for an EXR). Throws Error.
+double writeDiff(const CompareArgs& a, const output::Image& ref, const output::Image& test) {
+    output::Image diff = output::differenceImage(ref, test, a.options);
+    if (a.diffPng) {
+        const double scale = a.diffScale ? *a.diffScale : output::defaultDifferenceScale(diff);
+        output::writeDifferenceHeatmap(a.diff, diff, static_cast<float>(scale));
+        return scale;
+    }
+    diff.attributes = {{"penumbra/compare/reference", a.ref}, {"penumbra/compare/test", a.test}};
+    output::writeExr(a.diff, diff);
+    return 0.0;
+}
+
 }  // namespace
 
 int runCompare(const Args& args) {
@@ -190,15 +254,21 @@ int runCompare(const Args& args) {
             std::fputs(kCompareUsage, stdout);
             return 0;
         }
-    const CompareArgs a = parseArgs(args);
+    CompareArgs a;
+    try {
+        a = parseArgs(args);
+    } catch (const InputError& e) {
+        const bool json = std::find(args.begin(), args.end(), "--json") != args.end();
+        return cannotCompare(json, "", "", kExitUsage, e.what());
+    }
 
     output::Image ref, test;
     try {
         ref = output::readExr(a.ref);
         test = output::readExr(a.test);
     } catch (const output::UnreadableImage& e) {
-        std::fprintf(stderr, "penumbra: compare: %s\n", e.what());
-        return kExitUnreadable;
+        return cannotCompare(a.json, a.ref, a.test, kExitUnreadable,
+                             std::string("compare: ") + e.what());
     }
 
     output::CompareResult result;
@@ -207,23 +277,19 @@ int runCompare(const Args& args) {
     } catch (const output::CompareMismatch& e) {
         using Side = output::CompareMismatch::Side;
         const std::string& file = e.side() == Side::Test ? a.test : a.ref;
-        if (e.side() == Side::Both)
-            std::fprintf(stderr, "penumbra: compare: %s vs %s: %s\n", a.ref.c_str(), a.test.c_str(),
-                         e.what());
-        else
-            std::fprintf(stderr, "penumbra: compare: %s: %s\n", file.c_str(), e.what());
-        return kExitMismatch;
+        const std::string where =
+            e.side() == Side::Both ? a.ref + " vs " + a.test : file;
+        return cannotCompare(a.json, a.ref, a.test, kExitMismatch,
+                             "compare: " + where + ": " + e.what());
     }
 
-    // The difference image is written even when the comparison fails; a write failure is an
-    // error of its own (exit 2), never mistaken for a warning.
+    // The difference image is written even when the comparison fails; a write failure is a
+    // file error (exit 4), never mistaken for a verdict.
     bool diffFailed = false;
+    double diffScale = 0.0;
     if (!a.diff.empty()) {
         try {
-            output::Image diff = output::differenceImage(ref, test, a.options);
-            diff.attributes = {{"penumbra/compare/reference", a.ref},
-                               {"penumbra/compare/test", a.test}};
-            output::writeExr(a.diff, diff);
+            diffScale = writeDiff(a, ref, test);
         } catch (const Error& e) {
             std::fprintf(stderr, "penumbra: compare: --diff: %s\n", e.what());
             diffFailed = true;
@@ -235,13 +301,17 @@ int runCompare(const Args& args) {
         j["reference"] = a.ref;
         j["test"] = a.test;
         if (!a.diff.empty()) j["diff"] = diffFailed ? nlohmann::json() : nlohmann::json(a.diff);
+        if (a.diffPng && !diffFailed) j["diff_scale"] = diffScale;
         std::cout << j.dump(2) << std::endl;
     } else {
         printSummary(a, result);
+        if (a.diffPng && !diffFailed)
+            std::printf("  Heatmap %s: white = %s\n", a.diff.c_str(),
+                        formatValue(diffScale).c_str());
         std::fflush(stdout);
     }
-    if (diffFailed) return static_cast<int>(ExitCode::BadInput);
-    return static_cast<int>(result.verdict);
+    if (diffFailed) return kExitUnreadable;
+    return a.noFail ? 0 : static_cast<int>(result.verdict);
 }
 
 }  // namespace penumbra::cli

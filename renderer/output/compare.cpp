@@ -51,7 +51,7 @@ std::vector<ChannelPair> selectChannels(const Image& ref, const Image& test,
 }
 
 // 1 for each pixel that options.ids selects (all without ids); throws CompareMismatch when
-// ids are given and REF has no `id` channel.
+// ids are given and REF has no `id` channel or none of its pixels has a listed id.
 std::vector<uint8_t> selectPixels(const Image& ref, const CompareOptions& options, size_t pixels) {
     if (options.ids.empty()) return std::vector<uint8_t>(pixels, 1);
     const ImageChannel* id = ref.find("id");
@@ -65,11 +65,22 @@ std::vector<uint8_t> selectPixels(const Image& ref, const CompareOptions& option
         mask[i] =
             std::find(options.ids.begin(), options.ids.end(), std::lround(v)) != options.ids.end();
     }
+    if (std::find(mask.begin(), mask.end(), uint8_t{1}) == mask.end()) {
+        std::string message = "--ids ";
+        for (size_t i = 0; i < options.ids.size(); ++i) {
+            if (i > 0) message += ',';
+            message += std::to_string(options.ids[i]);
+        }
+        message += " selects no pixel (no pixel has such an id)";
+        throw CompareMismatch(CompareMismatch::Side::Reference, message);
+    }
     return mask;
 }
 
-// |a - b|, infinite when either is NaN or inf.
+// |a - b|: 0 for equal values, equal infinities included (the background's Z = +inf), else
+// infinite when either is NaN or inf.
 double absoluteDifference(float a, float b) {
+    if (a == b) return 0.0;
     if (!std::isfinite(a) || !std::isfinite(b)) return kInfinity;
     return std::fabs(static_cast<double>(a) - static_cast<double>(b));
 }

@@ -30,13 +30,14 @@ enum class Verdict { Pass = 0, Warn = 1, Fail = 2 };
 // "pass", "warn", "fail".
 const char* verdictName(Verdict verdict);
 
-// Metrics of one channel. A difference involving NaN or inf is infinite: it counts in `max`
-// and `nonfinite`, while mae, rmse and p99 are taken over the finite differences only.
+// Metrics of one channel. Equal values differ by 0, equal infinities included (Z is +inf on
+// the background in both images). Any other difference involving NaN or inf is infinite: it
+// counts in `max` and `nonfinite`, while mae, rmse and p99 are over the finite ones only.
 struct ChannelMetrics {
     std::string name;
     double mae = 0, rmse = 0, max = 0, p99 = 0;
     int max_x = 0, max_y = 0;
-    long nonfinite = 0;  // samples where either image holds NaN or inf
+    long nonfinite = 0;  // samples where either image holds NaN or inf, unless both hold one inf
 };
 
 struct CompareResult {
@@ -64,7 +65,8 @@ struct CompareResult {
     nlohmann::json toJson() const;
 };
 
-// Thrown when sizes or the requested channels do not match (compare exits 3). The message
+// Thrown when sizes or the requested channels do not match, or --ids selects no pixel
+// (compare exits 3). The message
 // names the side ("reference" or "test") and the channel; `side` says which file is at fault.
 class CompareMismatch : public std::runtime_error {
 public:

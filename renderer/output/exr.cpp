@@ -9,6 +9,9 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
 #include <OpenEXR/ImfThreading.h>
@@ -72,12 +75,33 @@ void checkImage(const std::filesystem::path& path, const Image& image) {
                                std::to_string(n));
     }
     const Imf::Header standard(1, 1);  // the attributes every EXR header holds
-    for (const auto& [name, value] : image.attributes) {
+    std::set<std::string> attributes;
+    auto checkName = [&](const std::string& name) {
         if (name.empty()) throw RuntimeError(path.string() + ": an attribute has no name");
         if (standard.find(name) != standard.end())
             throw RuntimeError(path.string() + ": attribute '" + name +
                                "' clashes with a standard EXR attribute");
-    }
+        if (!attributes.insert(name).second)
+            throw RuntimeError(path.string() + ": attribute '" + name + "' appears twice");
+    };
+    for (const auto& a : image.attributes) checkName(a.first);
+    for (const auto& a : image.int_attributes) checkName(a.first);
+    for (const auto& a : image.float_attributes) checkName(a.first);
+    for (const auto& a : image.matrix_attributes) checkName(a.first);
+}
+
+Imath::M44f toM44f(const std::array<float, 16>& m) {
+    Imath::M44f r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[i][j] = m[static_cast<size_t>(4 * i + j)];
+    return r;
+}
+
+std::array<float, 16> fromM44f(const Imath::M44f& m) {
+    std::array<float, 16> r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[static_cast<size_t>(4 * i + j)] = m[i][j];
+    return r;
 }
 
 void writeExrFile(const std::filesystem::path& file, const Image& image) {
@@ -86,6 +110,12 @@ void writeExrFile(const std::filesystem::path& file, const Image& image) {
     header.lineOrder() = Imf::INCREASING_Y;  // row 0 (top) first
     for (const auto& [name, value] : image.attributes)
         header.insert(name, Imf::StringAttribute(value));
+    for (const auto& [name, value] : image.int_attributes)
+        header.insert(name, Imf::IntAttribute(value));
+    for (const auto& [name, value] : image.float_attributes)
+        header.insert(name, Imf::FloatAttribute(value));
+    for (const auto& [name, value] : image.matrix_attributes)
+        header.insert(name, Imf::M44fAttribute(toM44f(value)));
     const Imath::Box2i window = header.dataWindow();
     const size_t width = static_cast<size_t>(image.width);
     // OpenEXR converts pixel types on input only: half channels need half buffers.
@@ -192,9 +222,19 @@ Image readExr(const std::filesystem::path& path) {
             file.readPixels(y0, y1);
         }
 
-        for (auto it = header.begin(); it != header.end(); ++it)
-            if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+        const Imf::Header standard(1, 1);  // the attributes every header holds: not ours
+        for (auto it = header.begin(); it != header.end(); ++it) {
+            if (standard.find(it.name()) != standard.end()) continue;
+            const Imf::Attribute& attribute = it.attribute();
+            if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&attribute))
                 image.attributes.emplace_back(it.name(), s->value());
+            else if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&attribute))
+                image.int_attributes.emplace_back(it.name(), i->value());
+            else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&attribute))
+                image.float_attributes.emplace_back(it.name(), f->value());
+            else if (const auto* m = dynamic_cast<const Imf::M44fAttribute*>(&attribute))
+                image.matrix_attributes.emplace_back(it.name(), fromM44f(m->value()));
+        }
         return image;
     } catch (const UnreadableImage&) {
         throw;

@@ -17,13 +17,14 @@ public:
 };
 
 // Writes IMAGE to PATH atomically (core/atomic_file.h; ZIP compression, increasing Y, each
-// channel as its `type`, attributes as string attributes). Creates missing parent folders.
+// channel as its `type`, attributes as string, int, float and M44f attributes). Creates missing parent folders.
 // Throws RuntimeError naming PATH on failure (also for an empty image, a channel of the wrong
-// size, duplicate channel names, or an attribute named like a standard one such as
-// "compression"); nothing is left under PATH then.
+// size, duplicate channel or attribute names, or an attribute named like a standard one such
+// as "compression"); nothing is left under PATH then.
 void writeExr(const std::filesystem::path& path, const Image& image);
 
-// Reads every channel (as float; `type` says how it was stored) and the string attributes.
+// Reads every channel (as float; `type` says how it was stored) and the string, int, float
+// and M44f attributes but those every EXR header holds (other types are skipped too).
 // Channels come in the order R, G, B, A, then the others alphabetically (EXR stores channels
 // sorted by name, so the writer's order is not kept). Throws UnreadableImage naming PATH for a
 // missing, unreadable, corrupt or truncated file, or one that is not a flat OpenEXR image.

@@ -50,4 +50,33 @@ void writeErrorHeatmap(const std::filesystem::path& path, const Image& ref, cons
     writePngRgb8(path, ref.width, ref.height, rgb);
 }
 
+int colourBarRows(int height) { return 2 + std::max(6, height / 10); }
+
+float defaultDifferenceScale(const Image& diff) {
+    float m = 0.0f;
+    for (const auto& c : diff.channels)
+        for (float v : c.pixels)
+            if (std::isfinite(v)) m = std::max(m, v);
+    return m > 0.0f ? m : 1.0f;
+}
+
+void writeDifferenceHeatmap(const std::filesystem::path& path, const Image& diff, float scale) {
+    if (diff.width <= 0 || diff.height <= 0 || diff.channels.empty() || !(scale > 0.0f))
+        throw RuntimeError(path.string() + ": nothing to draw (empty difference or scale <= 0)");
+    const size_t w = static_cast<size_t>(diff.width);
+    const size_t n = w * static_cast<size_t>(diff.height);
+    const int bar = colourBarRows(diff.height);
+    std::vector<unsigned char> rgb((n + w * static_cast<size_t>(bar)) * 3, 20);
+    for (size_t i = 0; i < n; ++i) {
+        float m = 0.0f;
+        for (const auto& c : diff.channels) m = std::max(m, c.pixels[i]);  // inf stays inf
+        heatColour(std::isnan(m) ? 1.0f : m / scale, &rgb[i * 3]);
+    }
+    for (int row = 2; row < bar; ++row)
+        for (size_t x = 0; x < w; ++x)
+            heatColour(w > 1 ? static_cast<float>(x) / static_cast<float>(w - 1) : 1.0f,
+                       &rgb[(n + static_cast<size_t>(row) * w + x) * 3]);
+    writePngRgb8(path, diff.width, diff.height + bar, rgb);
+}
+
 }  // namespace penumbra::output

@@ -17,4 +17,17 @@ void heatColour(float t, unsigned char rgb[3]);
 void writeErrorHeatmap(const std::filesystem::path& path, const Image& ref, const Image& test,
                        const std::string& channel, float full_scale);
 
+// Writes DIFF (compare's difference image) as a PNG heatmap of the largest difference over its
+// channels per pixel, SCALE mapping to white (infinite differences are white too), with a
+// colour bar below it: a gap of 2 dark rows, then rows ramping from 0 (left) to SCALE (right).
+// Throws RuntimeError naming PATH.
+void writeDifferenceHeatmap(const std::filesystem::path& path, const Image& diff, float scale);
+
+// The largest finite value of DIFF's channels: compare's default --diff-scale (1 when none is
+// above 0).
+float defaultDifferenceScale(const Image& diff);
+
+// Rows of the colour bar (and its gap) under a heatmap of HEIGHT rows.
+int colourBarRows(int height);
+
 }  // namespace penumbra::output

@@ -2,6 +2,7 @@
 // it back: named channels, each stored as float and written as half or float.
 #pragma once
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,12 @@ struct Image {
     std::vector<ImageChannel> channels;
     // Header attributes written as EXR string attributes (e.g. "penumbra/technique").
     std::vector<std::pair<std::string, std::string>> attributes;
+    // Typed header attributes: EXR int, float and M44f ("penumbra/frame", "fov",
+    // "worldToNDC"). A matrix is m[4 * row + column] as Imath stores it: points are row
+    // vectors, p' = p * M, the translation in m[12..14].
+    std::vector<std::pair<std::string, int>> int_attributes;
+    std::vector<std::pair<std::string, float>> float_attributes;
+    std::vector<std::pair<std::string, std::array<float, 16>>> matrix_attributes;
 
     const ImageChannel* find(const std::string& name) const {
         for (const auto& c : channels)

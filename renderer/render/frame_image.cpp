@@ -2,6 +2,7 @@
 #include "renderer/render/frame_image.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "renderer/passes/readback.h"
 
@@ -25,7 +26,7 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
     auto visibility = passes::readTexture(shade.visibility(), w, h, 1, GL_RED);
 
     // add() returns references into img.channels: reserve so none moves while they are held.
-    img.channels.reserve(13 + diagnostics.size());
+    img.channels.reserve(13 + diagnostics.size() + static_cast<size_t>(lights > 1 ? lights : 0));
     auto& r = img.add("R", PixelType::Half);
     auto& g = img.add("G", PixelType::Half);
     auto& b = img.add("B", PixelType::Half);
@@ -45,7 +46,8 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
         g.pixels[i] = beauty[4 * i + 1];
         b.pixels[i] = beauty[4 * i + 2];
         a.pixels[i] = beauty[4 * i + 3];  // coverage: the share of samples on geometry
-        z.pixels[i] = covered ? normal[4 * i + 3] : 0.0f;
+        // +inf on the background, where compositors expect it (nothing there, infinitely far).
+        z.pixels[i] = covered ? normal[4 * i + 3] : std::numeric_limits<float>::infinity();
         px.pixels[i] = position[4 * i + 0];
         py.pixels[i] = position[4 * i + 1];
         pz.pixels[i] = position[4 * i + 2];
@@ -54,6 +56,12 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
         nz.pixels[i] = normal[4 * i + 2];
         vis.pixels[i] = visibility[i];
         ids.pixels[i] = id[i];
+    }
+    // With several lights, each light's own visibility (its layer's .r: the fraction of that
+    // light's area the point sees) beside the irradiance-weighted `visibility`.
+    for (int l = 0; lights > 1 && l < lights; ++l) {
+        auto layer = passes::readTexture(targets.visibility(), w, h, 1, GL_RED, l);
+        img.add("visibility." + std::to_string(l), PixelType::Float).pixels = std::move(layer);
     }
     for (size_t d = 0; d < diagnostics.size(); ++d) {
         auto& ch = img.add(technique_name + "." + diagnostics[d].name, PixelType::Float);

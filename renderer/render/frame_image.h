@@ -1,5 +1,6 @@
 // Assembles the output image of a frame from GPU textures: beauty, depth, position, normal,
-// id, visibility and the technique's diagnostic channels (PRODUCT.md, Outputs).
+// id, visibility (and `visibility.<light index>` with several lights) and the technique's
+// diagnostic channels (PRODUCT.md, Outputs).
 #pragma once
 
 #include <string>

@@ -14,7 +14,9 @@
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
 #include "renderer/gl/debug.h"
+#include "renderer/output/cryptomatte.h"
 #include "renderer/output/timing.h"
+#include "renderer/render/camera_attributes.h"
 #include "renderer/render/frame_renderer.h"
 #include "renderer/render/render_job_outputs.h"
 #include "renderer/render/render_job_plan.h"
@@ -179,12 +181,17 @@ int runRenderJob(const RenderRequest& req) {
                                 {"penumbra/technique", std::string(info.name)},
                                 {"penumbra/params", renderer.params().json().dump()},
                                 {"penumbra/scene", scene_name},
-                                {"penumbra/frame", std::to_string(plan.frame)},
-                                {"penumbra/samples", std::to_string(renderer.samples())},
                                 {"penumbra/backend", glinfo.api},
                                 {"penumbra/gl_vendor", glinfo.vendor},
                                 {"penumbra/gl_renderer", glinfo.renderer},
                                 {"penumbra/gl_version", glinfo.version}};
+            // Numbers as EXR int attributes (they were strings until this change; README changelog).
+            image.int_attributes = {{"penumbra/frame", plan.frame},
+                                    {"penumbra/samples", renderer.samples()}};
+            addCameraAttributes(image, s.camera, image.width, image.height);
+            std::vector<std::string> names;
+            for (const auto& object : s.objects) names.push_back(object.name);
+            output::addCryptomatte(image, "CryptoObject", names, renderer.samples());
             report.scene = scene_name;
             report.frame = plan.frame;
             report.technique = std::string(info.name);

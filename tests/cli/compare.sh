@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# `penumbra compare` end to end: every exit code (0 pass, 1 warn, 2 fail or bad command line,
-# 3 size/channel mismatch, 4 unreadable file), --json, --diff and --help. Needs oiiotool.
+# `penumbra compare` end to end: every exit code (0 pass, 1 warn, 2 fail, 3 cannot compare,
+# 4 file error, 5 bad command line), --json, --no-fail, --diff (.exr, .png) and --help.
 set -euo pipefail
 
 : "${PENUMBRA:?set PENUMBRA to the penumbra binary}"
@@ -88,6 +88,11 @@ run 3 a.exr same.exr --channels R,Z
 expect_in err.txt "'Z'"
 run 3 a.exr same.exr --ids 0  # --ids needs the reference's `id` channel
 expect_in err.txt "'id'"
+oiiotool --pattern constant:color=0.5,0.5,0.5,2 32x32 4 --chnames R,G,B,id -o ids.exr
+run 0 ids.exr ids.exr --ids 2
+run 3 ids.exr ids.exr --ids 0,1  # a selection of no pixel cannot be compared
+expect_in err.txt "penumbra: compare: ids.exr: --ids 0,1 selects no pixel"
+[[ ! -s out.txt ]] || fail "--ids selecting nothing printed: $(cat out.txt)"
 
 # --- 4: unreadable ---
 run 4 missing.exr a.exr
@@ -99,25 +104,31 @@ expect_in err.txt "penumbra: compare: text.exr:"
 run 4 truncated.exr a.exr
 expect_in err.txt "penumbra: compare: truncated.exr:"
 
-# --- bad command lines: 2, one line naming the flag ---
-run 2 a.exr same.exr --bogus
+# --- bad command lines: 5 (not idiff's 2, a failure), one line naming the flag ---
+run 5 a.exr same.exr --bogus
 expect_in err.txt "--bogus"
-run 2 a.exr same.exr --fail abc
+run 5 a.exr same.exr --fail abc
 expect_in err.txt "--fail"
-run 2 a.exr same.exr --failpercent 150
+run 5 a.exr same.exr --failpercent 150
 expect_in err.txt "--failpercent"
-run 2 a.exr same.exr --warn -1
+run 5 a.exr same.exr --warn -1
 expect_in err.txt "--warn"
-run 2 a.exr same.exr --hardfail
+run 5 a.exr same.exr --hardfail
 expect_in err.txt "--hardfail"
-run 2 a.exr same.exr --channels R,,G
+run 5 a.exr same.exr --channels R,,G
 expect_in err.txt "--channels"
-run 2 a.exr same.exr --ids 1,one
+run 5 a.exr same.exr --ids 1,one
 expect_in err.txt "--ids"
-run 2 a.exr same.exr --ids 1,1
+run 5 a.exr same.exr --ids 1,1
 expect_in err.txt "--ids"
-run 2 a.exr
-run 2 a.exr same.exr third.exr
+run 5 a.exr same.exr --diff d.tif
+expect_in err.txt "penumbra: compare: --diff: 'd.tif' must end in .exr or .png"
+run 5 a.exr same.exr --diff-scale 0 --diff d.png
+expect_in err.txt "--diff-scale"
+run 5 a.exr same.exr --diff-scale 1 --diff d.exr
+expect_in err.txt "--diff-scale: needs a --diff OUT.png"
+run 5 a.exr
+run 5 a.exr same.exr third.exr
 expect_in err.txt "third.exr"
 for f in err.txt; do
     [[ $(wc -l <"$f") -eq 1 ]] || fail "bad-flag message is not one line: $(cat "$f")"
@@ -163,8 +174,50 @@ run 0 a.exr same.exr --diff out/same.exr --json
 python3 -c 'import json,sys; assert json.load(sys.stdin)["diff"] == "out/same.exr"' <out.txt ||
     fail "--json lacks the diff path"
 mkdir -p out/taken.exr/inside
-run 2 a.exr same.exr --diff out/taken.exr  # cannot write: an error, never a "warn" exit 1
+run 4 a.exr same.exr --diff out/taken.exr  # cannot write: a file error, never a verdict
 expect_in err.txt "out/taken.exr"
+
+# --- --diff OUT.png: a heatmap with a colour bar below, scaled to the max or --diff-scale ---
+run 2 a.exr box.exr --diff heat.png
+expect_in out.txt "Heatmap heat.png: white = 0.4"
+oiiotool --info heat.png >heat.txt 2>&1 || fail "oiiotool cannot read heat.png"
+expect_in heat.txt "32 x   40"  # 32 rows of image, 2 of gap, 6 of colour bar
+# The box's pixels (0.4, the max) are white-ish; the rest (0) black; the bar ends white.
+oiiotool heat.png --crop 1x1+0+0 -o box_px.exr && oiiotool box_px.exr --printstats >s1.txt 2>&1
+expect_in s1.txt "Stats Min: 1.000000 1.000000"
+oiiotool heat.png --crop 1x1+20+20 -o zero_px.exr && oiiotool zero_px.exr --printstats >s2.txt 2>&1
+expect_in s2.txt "Stats Max: 0.000000 0.000000"
+run 2 a.exr box.exr --diff heat8.png --diff-scale 0.8 --json
+python3 -c 'import json,sys; j = json.load(sys.stdin); assert j["diff"] == "heat8.png" and j["diff_scale"] == 0.8, j' <out.txt ||
+    fail "--json lacks diff_scale"
+cmp -s heat.png heat8.png && fail "--diff-scale 0.8 drew the same heatmap as 0.4"
+
+# --- --no-fail: metrics only, exit 0 whatever the verdict, unless it cannot compare ---
+run 0 a.exr off.exr --no-fail
+expect_in out.txt FAILURE
+run 0 a.exr off.exr --no-fail --json
+python3 -c 'import json,sys; assert json.load(sys.stdin)["verdict"] == "fail"' <out.txt ||
+    fail "--no-fail --json verdict"
+run 3 a.exr small.exr --no-fail
+run 4 a.exr missing.exr --no-fail
+
+# --- --json when it cannot compare: a JSON object with `error` and `exit`, nothing else ---
+json_error() {  # json_error CODE: stdout is one JSON object with that exit and an error
+    python3 -c 'import json, sys
+j = json.load(open("out.txt"))
+assert j["exit"] == int(sys.argv[1]) and j["error"].startswith("compare: "), j' "$1" ||
+        fail "--json error object: $(cat out.txt)"
+}
+run 3 a.exr small.exr --json
+json_error 3
+expect_in out.txt "size mismatch"
+run 4 a.exr missing.exr --json
+json_error 4
+run 3 ids.exr ids.exr --ids 7 --json
+json_error 3
+run 5 a.exr same.exr --json --fail x
+json_error 5
+[[ $(wc -l <err.txt) -eq 1 ]] || fail "usage error with --json is not one line on stderr"
 
 if [[ $failures -ne 0 ]]; then
     echo "compare.sh: $failures check(s) failed" >&2

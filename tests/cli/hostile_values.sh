@@ -55,7 +55,7 @@ short_message() {
 expect_exit 2 "" -- "$PENUMBRA" render "$S" --size "$long"; short_message --size
 expect_exit 2 "" -- "$PENUMBRA" render "$S" -D "$long"; short_message -D
 expect_exit 2 "" -- "$PENUMBRA" render "$S" "--$long"; short_message "unknown flag"
-expect_exit 2 "" -- "$PENUMBRA" compare a.exr b.exr --fail "$long"; short_message --fail
+expect_exit 5 "" -- "$PENUMBRA" compare a.exr b.exr --fail "$long"; short_message --fail  # compare: usage 5
 expect_exit 2 "" -- "$PENUMBRA" fit-lights x.exr --shape "$long"; short_message --shape
 python3 - "$S" "$long" <<'PY'
 import json, sys

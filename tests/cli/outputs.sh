@@ -64,7 +64,7 @@ one = json.load(open(sys.argv[2]))
 assert one["resolution"]["samples"] == 1 and "shade_msaa" not in [p["name"] for p in one["passes"]]
 PY
 if command -v oiiotool >/dev/null; then
-    oiiotool --info -v ms8.exr | grep -q 'penumbra/samples: "8"' || fail "samples attribute missing"
+    oiiotool --info -v ms8.exr | grep -q 'penumbra/samples: 8$' || fail "samples attribute missing or not an int"
 fi
 
 # --skip-existing renders only what is missing.

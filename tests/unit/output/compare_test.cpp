@@ -285,11 +285,42 @@ TEST(Compare, NanAndInfCountAsInfiniteDifferences) {
     hard.hard_fail = 1e9;
     EXPECT_EQ(compareImages(p.ref, p.test, hard).verdict, Verdict::Fail);
 
-    // NaN in both images still fails; so does inf.
+    // NaN in both images still fails; so does inf against a finite value or -inf.
     Image a = makeImage(1, 1, {{"R", {std::numeric_limits<float>::quiet_NaN()}}});
     EXPECT_EQ(compareImages(a, a, loose).verdict, Verdict::Fail);
     Image b = makeImage(1, 1, {{"R", {std::numeric_limits<float>::infinity()}}});
-    EXPECT_EQ(compareImages(b, b, loose).verdict, Verdict::Fail);
+    Image c = makeImage(1, 1, {{"R", {-std::numeric_limits<float>::infinity()}}});
+    Image d = makeImage(1, 1, {{"R", {1.0f}}});
+    EXPECT_EQ(compareImages(b, c, loose).verdict, Verdict::Fail);
+    EXPECT_EQ(compareImages(b, d, loose).verdict, Verdict::Fail);
+}
+
+TEST(Compare, EqualInfinitiesAreEqual) {
+    // Z is +inf on the background: the same background in both images must pass exactly.
+    const float inf = std::numeric_limits<float>::infinity();
+    Image a = makeImage(2, 1, {{"Z", {inf, 2.0f}}});
+    Image b = makeImage(2, 1, {{"Z", {inf, 2.0f}}});
+    const CompareResult r = compareImages(a, b, {});
+    EXPECT_EQ(r.verdict, Verdict::Pass);
+    EXPECT_EQ(r.nonfinite, 0);
+    EXPECT_EQ(r.max, 0.0);
+    EXPECT_EQ(differenceImage(a, b, {}).channels[0].pixels[0], 0.0f);
+}
+
+TEST(Compare, IdsThatSelectNoPixelAreAnError) {
+    Image a = makeImage(2, 1, {{"R", {0, 0}}, {"id", {0, -1}}});
+    CompareOptions o;
+    o.ids = {3, 4};
+    try {
+        (void)compareImages(a, a, o);
+        FAIL() << "expected CompareMismatch";
+    } catch (const CompareMismatch& e) {
+        EXPECT_EQ(e.side(), CompareMismatch::Side::Reference);
+        EXPECT_NE(std::string(e.what()).find("--ids 3,4 selects no pixel"), std::string::npos)
+            << e.what();
+    }
+    o.ids = {0};
+    EXPECT_EQ(compareImages(a, a, o).pixels, 1);
 }
 
 TEST(Compare, DifferenceImageHoldsAbsoluteDifferences) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -135,6 +136,43 @@ TEST(Exr, RowZeroIsTheTopRowForOtherReaders) {
                           roundTripValue(w.type, w.pixels[static_cast<size_t>(y * 5 + x)]))
                     << x << "," << y;
     }
+}
+
+TEST(Exr, TypedAttributesKeepTheirTypeForOtherReaders) {
+    ScratchFolder dir;
+    Image image = makeImage();
+    image.int_attributes = {{"penumbra/frame", 42}};
+    image.float_attributes = {{"penumbra/camera/fov_y", 37.5f}};
+    std::array<float, 16> m{};
+    for (size_t i = 0; i < 16; ++i) m[i] = static_cast<float>(i) + 0.5f;
+    image.matrix_attributes = {{"worldToNDC", m}};
+    const auto path = dir / "typed.exr";
+    writeExr(path, image);
+
+    auto in = OIIO::ImageInput::open(path.string());
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec& spec = in->spec();
+    const OIIO::ParamValue* frame = spec.find_attribute("penumbra/frame");
+    ASSERT_NE(frame, nullptr);
+    EXPECT_EQ(frame->type(), OIIO::TypeInt);
+    EXPECT_EQ(frame->get_int(), 42);
+    const OIIO::ParamValue* fov = spec.find_attribute("penumbra/camera/fov_y");
+    ASSERT_NE(fov, nullptr);
+    EXPECT_EQ(fov->type(), OIIO::TypeFloat);
+    EXPECT_EQ(fov->get_float(), 37.5f);
+    const OIIO::ParamValue* ndc = spec.find_attribute("worldToNDC");
+    ASSERT_NE(ndc, nullptr);
+    EXPECT_EQ(ndc->type(), OIIO::TypeMatrix44);
+    const auto* values = static_cast<const float*>(ndc->data());
+    for (size_t i = 0; i < 16; ++i) EXPECT_EQ(values[i], m[i]) << i;  // row-major, as Imath
+
+    const Image read = readExr(path);
+    EXPECT_EQ(read.int_attributes, image.int_attributes);
+    EXPECT_EQ(read.float_attributes, image.float_attributes);
+    EXPECT_EQ(read.matrix_attributes, image.matrix_attributes);
+
+    image.float_attributes = {{"penumbra/frame", 1.0f}};  // a name given twice is refused
+    EXPECT_THROW(writeExr(dir / "twice.exr", image), RuntimeError);
 }
 
 TEST(Exr, OverwritesAnExistingFile) {
