@@ -3,9 +3,9 @@
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
 // depth matches the pixel's. A pixel no layer matches sees the light's part above its horizon
-// when it faces away from the light's centre (no layer holds such surfaces); is in shadow when
-// it lies beyond a full stack of layers (behind that many light-facing surfaces); else takes
-// the nearest layer. Pixels of objects that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
+// when it faces away from the light's centre (no layer holds such surfaces); else takes the
+// nearest layer, which for a pixel beyond a full stack of layers is the deepest: what shadows
+// that surface shadows the pixel behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
 // used (of the texel weighing most; -1 where none).
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
@@ -112,15 +112,13 @@ void main() {
         float dp = (z - u_near) / u_range;
         if (!layeredOcclusion(uv, dp, tol, occlusion, layer)) {
             vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-            int deepest = -1, nearest = -1;
-            float deepest_d = 0.0, nearest_diff = 2.0;
+            int nearest = -1;
+            float nearest_diff = 2.0;
             ivec2 res = textureSize(u_layers, 0).xy;
             ivec2 q = clamp(ivec2(uv * vec2(res)), ivec2(0), res - 1);
             for (int k = 0; k < u_layer_count; ++k) {
                 float dk = texelFetch(u_layers, ivec3(q, k), 0).r;
                 if (dk >= 1.0) break;
-                deepest = k;
-                deepest_d = dk;
                 if (abs(dk - dp) < nearest_diff) {
                     nearest_diff = abs(dk - dp);
                     nearest = k;
@@ -135,13 +133,8 @@ void main() {
                 o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
                 return;
             }
-            if (deepest == u_layer_count - 1 && dp > deepest_d) {
-                occlusion = 1.0;  // behind every layer
-                layer = u_layer_count;
-            } else {
-                occlusion = occlusionOf(nearest, q);
-                layer = nearest;
-            }
+            occlusion = occlusionOf(nearest, q);
+            layer = nearest;
         }
     }
     o_visibility = vec4(1.0 - clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);

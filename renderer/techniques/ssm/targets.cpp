@@ -57,7 +57,15 @@ ReceiverLayers::ReceiverLayers(int size_, int layers_, const char* label)
       layers(layers_),
       depth(gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, size_, size_, layers_, label)),
       ids(gl::createTexture2DArray(GL_R32I, size_, size_, layers_, label)),
-      scratch(size_, label, true) {}
+      scratch(size_, label, true),
+      resolve(gl::buildProgram("ssm farthest receiver layer",
+                               {"passes/fullscreen.vert", "techniques/ssm/peel_resolve.frag"})),
+      last_fbo(gl::createFramebuffer(label)) {
+    glNamedFramebufferTextureLayer(last_fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0, layers - 1);
+    glNamedFramebufferDrawBuffer(last_fbo.id(), GL_NONE);
+    if (glCheckNamedFramebufferStatus(last_fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+}
 
 int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& program,
                            passes::GpuScene::Filter filter, const glm::mat4& view_proj,
@@ -73,11 +81,29 @@ int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& pro
     for (int k = 0; k < layers; ++k) {
         glUseProgram(program.id());
         gl::setUniform(program, "u_layer", k);
+        const bool farthest = k > 0 && k == layers - 1;
         glBeginQuery(GL_ANY_SAMPLES_PASSED, any.id());
-        scratch.render(scene, program, filter, view_proj, light, near, inv_range, false);
+        scratch.render(scene, program, filter, view_proj, light, near, inv_range, farthest);
         glEndQuery(GL_ANY_SAMPLES_PASSED);
-        glCopyImageSubData(scratch.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth.id(),
-                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);
+        if (farthest) {
+            // Cleared to 0 for the greater test: written with 1 for "none" instead.
+            glBindFramebuffer(GL_FRAMEBUFFER, last_fbo.id());
+            glViewport(0, 0, size, size);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            glDepthMask(GL_TRUE);
+            glUseProgram(resolve.id());
+            glBindTextureUnit(0, scratch.depth.id());
+            glBindTextureUnit(1, scratch.ids.id());
+            fullscreen.draw();
+            glDepthFunc(GL_LESS);
+            glDisable(GL_DEPTH_TEST);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glBindTextureUnit(5, depth.id());
+        } else {
+            glCopyImageSubData(scratch.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth.id(),
+                               GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);
+        }
         glCopyImageSubData(scratch.ids.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ids.id(),
                            GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);
         GLuint passed = 0;

@@ -9,6 +9,7 @@
 
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gpu_scene.h"
 
 namespace penumbra::techniques::ssm {
@@ -32,12 +33,16 @@ struct DepthTarget {
 
 // LAYERS receiver depth maps of SIZE^2 texels from the light's centre (a DEPTH32F array):
 // layer 0 the nearest light-facing receiver surface, layer k the nearest one beyond layer k - 1
-// (depth peeling), 1 where a layer has none.
+// (depth peeling), and with LAYERS > 1 the last the farthest one beyond the layer before it
+// (so the floor under a deep stack of surfaces is always a layer); 1 where a layer has none.
 struct ReceiverLayers {
     int size, layers;
     gl::Texture depth;  // 2D array, LAYERS layers
     gl::Texture ids;    // 2D array of the surfaces' object ids (R32I, -1 = none)
     DepthTarget scratch;
+    gl::Program resolve;       // techniques/ssm/peel_resolve.frag (the farthest layer)
+    gl::Framebuffer last_fbo;  // the array's last layer as a depth target
+    passes::Fullscreen fullscreen;
     ReceiverLayers(int size, int layers, const char* label);
 
     // Peels the objects FILTER selects through VIEW_PROJ with PROGRAM (techniques/ssm/depth.vert
