@@ -20,6 +20,8 @@ Image makeDifference() {
     Image d;
     d.width = 20;
     d.height = 4;
+    // add() returns references into d.channels: reserve so that none moves while held.
+    d.channels.reserve(2);
     auto& r = d.add("R", PixelType::Float);
     auto& g = d.add("G", PixelType::Float);
     for (int y = 0; y < 4; ++y)
