@@ -70,8 +70,8 @@ void ArgCursor::unknown() const {
     if (a.size() > 1 && a[0] == '-') {
         const std::string typed = a.substr(0, a.find('='));
         const std::string near = nearestName(typed, names_);
-        fail("unknown flag '" + quoteText(a) + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
-             "see --help)");
+        fail("unknown flag '" + quoteText(a) + "' (" +
+             (near.empty() ? "" : "did you mean " + near + "? ") + "see --help)");
     }
     fail("unexpected argument '" + quoteText(a) + "' (see --help)");
 }

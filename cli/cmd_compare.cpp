@@ -217,7 +217,6 @@ void printSummary(const CompareArgs& a, const output::CompareResult& r) {
     }
 }
 
-
 // When compare cannot compare: the one line MESSAGE on stderr and, with --json, a JSON object
 // holding it as `error` on stdout. Returns CODE.
 int cannotCompare(bool json, const std::string& ref, const std::string& test, int code,
@@ -277,8 +276,7 @@ int runCompare(const Args& args) {
     } catch (const output::CompareMismatch& e) {
         using Side = output::CompareMismatch::Side;
         const std::string& file = e.side() == Side::Test ? a.test : a.ref;
-        const std::string where =
-            e.side() == Side::Both ? a.ref + " vs " + a.test : file;
+        const std::string where = e.side() == Side::Both ? a.ref + " vs " + a.test : file;
         return cannotCompare(a.json, a.ref, a.test, kExitMismatch,
                              "compare: " + where + ": " + e.what());
     }

@@ -61,8 +61,9 @@ std::string frameFromEnvironment(const ArgCursor& c, const std::string& var, lon
     if (text.empty() || ec != std::errc() || ptr != text.data() + text.size())
         c.fail("--frame-from-env: " + var + "='" + text + "' is not a whole number");
     if (frame + offset < 0)
-        c.fail("--frame-from-env: " + var + "=" + text + (offset ? " with --frame-offset " + std::to_string(offset) : "") +
-               " gives frame " + std::to_string(frame + offset) + " (frames are 0 or more)");
+        c.fail("--frame-from-env: " + var + "=" + text +
+               (offset ? " with --frame-offset " + std::to_string(offset) : "") + " gives frame " +
+               std::to_string(frame + offset) + " (frames are 0 or more)");
     return std::to_string(frame + offset);
 }
 
@@ -79,7 +80,8 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
         req.technique = *v;
     } else if ((v = c.option("-D", "--set"))) {
         size_t eq = v->find('=');
-        if (eq == std::string::npos || eq == 0) c.fail("-D: expected KEY=VALUE, got '" + quoteText(*v) + "'");
+        if (eq == std::string::npos || eq == 0)
+            c.fail("-D: expected KEY=VALUE, got '" + quoteText(*v) + "'");
         req.overrides.push_back({v->substr(0, eq), v->substr(eq + 1)});
     } else if ((v = c.option("-o", "--output"))) {
         req.output = pattern(c, "--output", *v);
@@ -123,7 +125,8 @@ int runRender(const Args& args) {
             std::fputs(kHelp, stdout);
             return 0;
         }
-        if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl) || parseMemoryLimitFlag(c)) continue;
+        if (parseRenderOption(c, req) || parseBackendFlag(c, req.gl) || parseMemoryLimitFlag(c))
+            continue;
         if (auto v = c.option("", "--frame-from-env")) {
             if (v->empty()) c.fail("--frame-from-env: empty variable name");
             frame_env = *v;

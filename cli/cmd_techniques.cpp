@@ -7,8 +7,8 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
-#include "renderer/render/render_job.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/render/render_job.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::cli {
@@ -49,7 +49,8 @@ void printParamTable(std::span<const ParamSpec> params) {
     for (const auto& s : params) {
         rows.push_back({std::string(s.key), std::string(paramTypeName(s.type)),
                         "default " + paramDefault(s).dump(), rangeText(s), std::string(s.doc)});
-        for (size_t i = 0; i < width.size(); ++i) width[i] = std::max(width[i], rows.back()[i].size());
+        for (size_t i = 0; i < width.size(); ++i)
+            width[i] = std::max(width[i], rows.back()[i].size());
     }
     for (const auto& r : rows) {
         std::string line = " ";

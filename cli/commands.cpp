@@ -21,7 +21,9 @@ constexpr Command kCommands[] = {
 
 }  // namespace
 
-std::span<const Command> allCommands() { return kCommands; }
+std::span<const Command> allCommands() {
+    return kCommands;
+}
 
 const Command* findCommand(std::string_view name) {
     for (const Command& c : kCommands)

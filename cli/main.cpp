@@ -24,8 +24,9 @@ std::string usage() {
         synopsis.resize(std::max<size_t>(synopsis.size() + 1, 36), ' ');
         text += "  " + synopsis + std::string(c.summary) + "\n";
     }
-    return text + "  --version                           print the version\n\n"
-                  "Every command answers --help and --version.\n";
+    return text +
+           "  --version                           print the version\n\n"
+           "Every command answers --help and --version.\n";
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -38,7 +38,8 @@ double processStart(long pid) {
     if (paren == std::string::npos) return -1;
     std::istringstream fields(text.substr(paren + 2));
     std::string field;
-    for (int i = 3; i <= 22 && fields >> field; ++i) {}
+    for (int i = 3; i <= 22 && fields >> field; ++i) {
+    }
     std::ifstream boot("/proc/stat");
     std::string key;
     double btime = -1;
@@ -59,7 +60,9 @@ bool writerIsGone(long pid, std::filesystem::file_time_type time) {
 }
 }  // namespace
 
-AtomicGroup::AtomicGroup() : outer_(current_group) { current_group = this; }
+AtomicGroup::AtomicGroup() : outer_(current_group) {
+    current_group = this;
+}
 
 AtomicGroup::~AtomicGroup() {
     current_group = outer_;
@@ -88,8 +91,7 @@ int removeStaleTemporaries(const std::filesystem::path& path) {
             !name.ends_with(".tmp") || !entry.is_regular_file(ec))
             continue;
         const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
-        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
-            continue;
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
         if (writerIsGone(std::stol(digits), entry.last_write_time(ec)) &&
             std::filesystem::remove(entry.path(), ec))
             ++removed;
