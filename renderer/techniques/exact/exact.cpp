@@ -153,10 +153,7 @@ private:
             o[0] = 1, o[1] = 0, o[2] = 0, o[3] = 0;
             return 0;
         }
-        const glm::vec3 p(position_[4 * pix], position_[4 * pix + 1], position_[4 * pix + 2]);
-        glm::vec3 nrm(normal_[4 * pix], normal_[4 * pix + 1], normal_[4 * pix + 2]);
-        const float len = glm::length(nrm);
-        nrm = len > 0 ? nrm / len : glm::vec3(0, 1, 0);
+        const glm::vec3 p = position(pix), nrm = normal(pix);
         const auto pixel = static_cast<std::uint32_t>(pix);
         int lit = 0;
         double weighted = 0, weights = 0;
@@ -198,6 +195,16 @@ private:
         return std::uint64_t(total);
     }
 
+    glm::vec3 position(size_t pix) const {
+        return {position_[4 * pix], position_[4 * pix + 1], position_[4 * pix + 2]};
+    }
+    // The G-buffer normal of PIX, unit length (+y where the G-buffer holds none).
+    glm::vec3 normal(size_t pix) const {
+        const glm::vec3 n(normal_[4 * pix], normal_[4 * pix + 1], normal_[4 * pix + 2]);
+        const float len = glm::length(n);
+        return len > 0 ? n / len : glm::vec3(0, 1, 0);
+    }
+
     // The environment at one pixel: OUT gets (shadowed irradiance rgb, unshadowed luminance
     // irradiance), estimated from env_samples_ rays, half drawn by the map's luminance and
     // half by the cosine about the normal, weighted by the balance heuristic:
@@ -206,10 +213,7 @@ private:
         float* o = &out[4 * pix];
         o[0] = o[1] = o[2] = o[3] = 0;
         if (position_[4 * pix + 3] == 0.0f || environment_->empty()) return 0;
-        const glm::vec3 p(position_[4 * pix], position_[4 * pix + 1], position_[4 * pix + 2]);
-        glm::vec3 nrm(normal_[4 * pix], normal_[4 * pix + 1], normal_[4 * pix + 2]);
-        const float len = glm::length(nrm);
-        nrm = len > 0 ? nrm / len : glm::vec3(0, 1, 0);
+        const glm::vec3 p = position(pix), nrm = normal(pix);
         // An orthonormal frame about the normal for the cosine samples.
         const glm::vec3 helper = std::fabs(nrm.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
         const glm::vec3 tx = glm::normalize(glm::cross(helper, nrm)), ty = glm::cross(nrm, tx);

@@ -6,6 +6,14 @@
 #include "renderer/core/error.h"
 
 namespace penumbra::techniques::ssm {
+namespace {
+
+void checkComplete(const gl::Framebuffer& fbo, const char* label) {
+    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+}
+
+}  // namespace
 
 DepthTarget::DepthTarget(int size_, const char* label, bool with_ids)
     : size(size_),
@@ -18,8 +26,7 @@ DepthTarget::DepthTarget(int size_, const char* label, bool with_ids)
     }
     glNamedFramebufferDrawBuffer(fbo.id(), with_ids ? GL_COLOR_ATTACHMENT0 : GL_NONE);
     glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
-    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+    checkComplete(fbo, label);
 }
 
 void DepthTarget::render(const passes::GpuScene& scene, const gl::Program& program,
@@ -63,8 +70,7 @@ ReceiverLayers::ReceiverLayers(int size_, int layers_, const char* label)
       last_fbo(gl::createFramebuffer(label)) {
     glNamedFramebufferTextureLayer(last_fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0, layers - 1);
     glNamedFramebufferDrawBuffer(last_fbo.id(), GL_NONE);
-    if (glCheckNamedFramebufferStatus(last_fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+    checkComplete(last_fbo, label);
 }
 
 int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& program,
@@ -133,9 +139,7 @@ SoftShadowTarget::SoftShadowTarget(int size, int layers, GLenum format, const ch
         fbos.push_back(gl::createFramebuffer(label));
         glNamedFramebufferTextureLayer(fbos.back().id(), GL_COLOR_ATTACHMENT0, occlusion.id(), 0,
                                        k);
-        if (glCheckNamedFramebufferStatus(fbos.back().id(), GL_FRAMEBUFFER) !=
-            GL_FRAMEBUFFER_COMPLETE)
-            throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
+        checkComplete(fbos.back(), label);
     }
 }
 
