@@ -51,6 +51,10 @@ Result render(const std::string& name, const std::string& technique,
 std::string adaptive(const std::string& extra = "") {
     return R"({"name": "adaptive", "map_size": 512)" + extra + "}";
 }
+// The paper's refinement rule (eq. 4 with epsilon) instead of the default error metric.
+std::string paper(const std::string& extra = "") {
+    return adaptive(R"(, "metric": "global")" + extra);
+}
 std::string reference(int n) {
     return R"({"name": "reference", "map_size": 512, "samples": )" + std::to_string(n) + "}";
 }
@@ -77,7 +81,7 @@ void checkAgainstReference(const std::string& scene) {
 TEST(AdaptiveGL, FullRefinementSharesCornerSamples) {
     // epsilon 0 refines every cell: depth 2 is the full 5 x 5 grid, each shared corner
     // rendered once, and 2 comparisons for each of the 1 + 4 cells above the last level.
-    auto r = render("closed_form.json", adaptive(R"(, "epsilon": 0, "max_depth": 2)"));
+    auto r = render("closed_form.json", paper(R"(, "epsilon": 0, "max_depth": 2)"));
     EXPECT_EQ(r.stats.value("maps_rendered", 0), 25);
     EXPECT_EQ(r.stats.value("comparisons", 0), 10);
     EXPECT_EQ(r.stats.value("queries", 0), 10);
@@ -85,8 +89,7 @@ TEST(AdaptiveGL, FullRefinementSharesCornerSamples) {
 }
 
 TEST(AdaptiveGL, MapBudgetStopsRefinement) {
-    auto r =
-        render("closed_form.json", adaptive(R"(, "epsilon": 0, "max_depth": 4, "max_maps": 12)"));
+    auto r = render("closed_form.json", paper(R"(, "epsilon": 0, "max_depth": 4, "max_maps": 12)"));
     EXPECT_LE(r.stats.value("maps_rendered", 0), 12);
     EXPECT_TRUE(r.stats.value("map_budget_hit", false));
 }
@@ -115,8 +118,8 @@ TEST(AdaptiveGL, CompareStrideEstimatesTheFullCount) {
     int maps[3];
     const int strides[3] = {1, 2, 4};
     for (int i = 0; i < 3; ++i)
-        maps[i] = render("closed_form.json", adaptive(R"(, "epsilon": 0.01, "compare_stride": )" +
-                                                      std::to_string(strides[i])))
+        maps[i] = render("closed_form.json", paper(R"(, "epsilon": 0.01, "compare_stride": )" +
+                                                   std::to_string(strides[i])))
                       .stats.value("maps_rendered", 0);
     std::printf("maps with compare stride 1, 2, 4: %d, %d, %d\n", maps[0], maps[1], maps[2]);
     EXPECT_GT(maps[0], 9);   // partly refined: more than depth 1's 9 maps
@@ -132,9 +135,8 @@ TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
     double mae[3];
     const char* names[3] = {"area", "paper", "equal"};
     for (int i = 0; i < 3; ++i) {
-        auto r =
-            render("closed_form.json",
-                   adaptive(std::string(R"(, "epsilon": 0.01, "weights": ")") + names[i] + "\""));
+        auto r = render("closed_form.json",
+                        paper(std::string(R"(, "epsilon": 0.01, "weights": ")") + names[i] + "\""));
         mae[i] = shadowRegionMae(r.visibility, truth);
         std::printf("weights %s: MAE %.5f with %d maps\n", names[i], mae[i],
                     r.stats.value("maps_rendered", 0));
@@ -146,8 +148,8 @@ TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
 }
 
 TEST(AdaptiveGL, PcfSoftensTheEvaluation) {
-    auto sharp = render("closed_form.json", adaptive(R"(, "epsilon": 1)"));
-    auto soft = render("closed_form.json", adaptive(R"(, "epsilon": 1, "pcf": 5)"));
+    auto sharp = render("closed_form.json", paper(R"(, "epsilon": 1)"));
+    auto soft = render("closed_form.json", paper(R"(, "epsilon": 1, "pcf": 5)"));
     // Four corner maps alone give visibility in steps of 1/4; a 5 x 5 kernel fills between.
     auto partial = [](const std::vector<float>& v) {
         long n = 0;
@@ -174,7 +176,7 @@ TEST(AdaptiveGL, ErrorFallsAsEpsilonFalls) {
     double last = 1e9;
     int last_maps = 0;
     for (const char* eps : {"0.05", "0.01", "0.003", "0.0"}) {
-        auto r = render("closed_form.json", adaptive(std::string(R"(, "epsilon": )") + eps));
+        auto r = render("closed_form.json", paper(std::string(R"(, "epsilon": )") + eps));
         const double mae = shadowRegionMae(r.visibility, truth);
         const int maps = r.stats.value("maps_rendered", 0);
         std::printf("epsilon %s: MAE %.5f with %d maps\n", eps, mae, maps);
@@ -200,7 +202,7 @@ TEST(AdaptiveGL, AccumulationPathMatchesTextureArrayPath) {
 TEST(AdaptiveGL, RelativeGammaRefinesLikeAbsolute) {
     // Depths are normalised to [0,1] with casters near the middle, so eq. 7 with gamma 0.02
     // flags roughly the pixels eq. 3 with gamma 0.01 does; both must refine the penumbra.
-    auto r = render("closed_form.json", adaptive(R"(, "gamma_mode": "relative", "gamma": 0.02)"));
+    auto r = render("closed_form.json", paper(R"(, "gamma_mode": "relative", "gamma": 0.02)"));
     EXPECT_GE(r.stats.value("depth_reached", 0), 2);
     EXPECT_GT(r.stats.value("comparisons", 0), 2);
 }
@@ -208,12 +210,11 @@ TEST(AdaptiveGL, RelativeGammaRefinesLikeAbsolute) {
 TEST(AdaptiveGL, LinearLightSubdividesIn1D) {
     // A light of (nearly: the scene format rejects 0) zero height: samples at the two ends,
     // one comparison per segment, halving; subdivision "linear" forces the same on any light.
-    auto r = render("closed_form.json", adaptive(R"(, "epsilon": 0)"),
-                    {{"lights.0.size", "[1, 0.0005]"}});
+    auto r =
+        render("closed_form.json", paper(R"(, "epsilon": 0)"), {{"lights.0.size", "[1, 0.0005]"}});
     EXPECT_EQ(r.stats.value("maps_rendered", 0), 9);  // 2^3 + 1 points at max_depth 3
     EXPECT_EQ(r.stats.value("comparisons", 0), 7);    // 1 + 2 + 4 segments
-    auto forced =
-        render("closed_form.json", adaptive(R"(, "epsilon": 0, "subdivision": "linear")"));
+    auto forced = render("closed_form.json", paper(R"(, "epsilon": 0, "subdivision": "linear")"));
     EXPECT_EQ(forced.stats.value("maps_rendered", 0), 9);
 }
 
@@ -222,7 +223,7 @@ TEST(AdaptiveGL, TileMetricRefinesASmallShadowTheGlobalOneMisses) {
     // disagreeing pixels and stops at the corners; the tile metric refines where it is.
     const std::string scene = "adaptive_small_shadow.json";
     const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
-    auto global = render(scene, adaptive());
+    auto global = render(scene, paper());
     auto tile = render(scene, adaptive(R"(, "metric": "tile")"));
     const double mae_global = shadowRegionMae(global.visibility, truth, 100);
     const double mae_tile = shadowRegionMae(tile.visibility, truth, 100);
@@ -262,8 +263,8 @@ TEST(AdaptiveGL, ShadowTestComparisonRefinesWhereShadowsDiffer) {
     // against 75 (0.011), as depth differences over the casters themselves no longer count.
     for (const char* scene : {"closed_form.json", "adaptive_default.json"}) {
         const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
-        auto depth = render(scene, adaptive(R"(, "epsilon": 0.01)"));
-        auto tests = render(scene, adaptive(R"(, "epsilon": 0.01, "compare": "shadow_test")"));
+        auto depth = render(scene, paper(R"(, "epsilon": 0.01)"));
+        auto tests = render(scene, paper(R"(, "epsilon": 0.01, "compare": "shadow_test")"));
         const double mae_depth = shadowRegionMae(depth.visibility, truth);
         const double mae_tests = shadowRegionMae(tests.visibility, truth);
         std::printf(

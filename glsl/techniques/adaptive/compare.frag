@@ -1,7 +1,8 @@
 #version 450 core
 // `adaptive`: compares two light-sample shadow maps over a G-buffer (Schwärzler 2009, eq. 3
 // or 7) at every u_stride-th G-buffer pixel in x and y. Agreeing pixels are discarded, so an
-// occlusion query counts the disagreeing ones.
+// occlusion query counts the disagreeing ones. Mode 1 counts instead the pixels that any of
+// four views shadows (the shadow region the error metric divides by).
 #include "common/sample_view.glsl"
 
 layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
@@ -20,6 +21,9 @@ layout(binding = 2) uniform sampler2DArray u_maps;  // raw linear depths (no com
 
 uniform int u_view_a;     // the two views (= layers) compared
 uniform int u_view_b;
+uniform int u_mode;       // 0: a and b disagree; 1: any of a, b, c, d shadows (hard tests)
+uniform int u_view_c;     // mode 1's other two views
+uniform int u_view_d;
 uniform float u_gamma;    // largest depth difference still considered equal
 uniform int u_tests;           // 1: compare hard-shadow test results instead of depths
 uniform float u_normal_offset;  // as in the shadow test: texels at the receiver's distance
@@ -69,11 +73,17 @@ void main() {
     if (pos.w == 0.0) discard;
     vec3 q = vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up),
                   dot(pos.xyz, u_light_forward));
-    if (u_tests != 0) {
+    if (u_tests != 0 || u_mode == 1) {
         vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
         float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
         vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_a].params.y * dist);
         vec3 qo = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
+        if (u_mode == 1) {
+            if (lit(u_view_a, qo) && lit(u_view_b, qo) && lit(u_view_c, qo) && lit(u_view_d, qo))
+                discard;
+            o_level = vec4(0.0);  // no refinement level: max blending leaves the diagnostic
+            return;
+        }
         if (lit(u_view_a, qo) == lit(u_view_b, qo)) discard;
     } else {
         float da = storedDepth(u_view_a, q);

@@ -10,6 +10,7 @@
 
 #include "renderer/core/error.h"
 #include "renderer/passes/bindings.h"
+#include "renderer/techniques/adaptive/error_budget.h"
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/light_sampling.h"
@@ -19,21 +20,30 @@ namespace penumbra::techniques {
 namespace {
 
 constexpr std::array kAdaptiveParams = {
+    enumParam("metric", "error", "error|global|tile",
+              "error: split the cells whose corner maps leave the largest estimated visibility "
+              "error until the frame's estimate is at most target_error (independent of the "
+              "image size); global: eq. 4 with epsilon over the whole frame (paper); tile: "
+              "refine when any screen tile's disagreeing share reaches tile_epsilon (the local "
+              "metric 5.1 asks for)"),
+    floatParam("target_error", 0.02, 0.0, 1.0,
+               "metric \"error\": the shadow-region error of visibility (mean |V - V_true| over "
+               "shadowed pixels) that the light's subdivision may leave; a cell's estimate is "
+               "1/4 x its share of the light x its disagreeing over the shadowed pixels"),
     floatParam("epsilon", 0.003, 0.0, 1.0,
-               "refine when disagreeing pixels / metric area >= epsilon (eq. 4)"),
+               "metric \"global\": refine when disagreeing pixels / metric area >= epsilon "
+               "(eq. 4)"),
     floatParam("gamma", 0.01, 0.0, 1.0,
                "two stored depths are equal when they differ by less than gamma (eq. 3 / 7)"),
-    enumParam("compare", "depth", "depth|shadow_test",
+    enumParam("compare", "auto", "auto|depth|shadow_test",
               "what two maps are compared on: their stored depths (paper, with gamma) or their "
-              "hard-shadow test results for the receiver"),
+              "hard-shadow test results for the receiver; auto: shadow_test for metric "
+              "\"error\" (disagreeing tests are where visibility varies), depth otherwise"),
     enumParam("gamma_mode", "absolute", "absolute|relative",
               "depth test: absolute |d_a - d_b| (eq. 3) or relative |1 - d_a/d_b| (eq. 7)"),
     enumParam("reprojection", "camera", "camera|light_centre",
               "where maps are compared: the camera view (view-dependent) or a map_size^2 view "
               "from the light's centre (view-independent, section 4.1)"),
-    enumParam("metric", "global", "global|tile",
-              "global: eq. 4 over the whole frame (paper); tile: refine when any screen tile's "
-              "disagreeing share reaches tile_epsilon (the local metric 5.1 asks for)"),
     intParam("tile_size", 32, 4, 1024, "tile side in pixels for metric \"tile\""),
     floatParam("tile_epsilon", 0.05, 0.0, 1.0,
                "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
@@ -74,7 +84,9 @@ constexpr int kScratchLayers = 16;
 class Adaptive final : public Technique {
 public:
     explicit Adaptive(const Params& p)
-        : epsilon_(p.getFloat("epsilon")),
+        : error_metric_(p.getString("metric") == "error"),
+          target_error_(p.getFloat("target_error")),
+          epsilon_(p.getFloat("epsilon")),
           screen_metric_(p.getString("metric_area") == "screen"),
           tile_epsilon_(p.getFloat("tile_epsilon")),
           light_centre_(p.getString("reprojection") == "light_centre"),
@@ -88,7 +100,8 @@ public:
           settings_(samplingSettings(p)) {
         compare_.gamma = static_cast<float>(p.getFloat("gamma"));
         compare_.relative = p.getString("gamma_mode") == "relative";
-        compare_.tests = p.getString("compare") == "shadow_test";
+        const std::string compare = p.getString("compare");
+        compare_.tests = compare == "shadow_test" || (compare == "auto" && error_metric_);
         compare_.normal_offset = settings_.test.normal_offset;
         compare_.depth_bias = settings_.test.depth_bias;
         if (p.getString("metric") == "tile") compare_.tile_size = p.getInt("tile_size");
@@ -140,6 +153,8 @@ public:
         std::vector<adaptive::QuadtreeCell> cells{tree.root()};
         int comparisons = 0, level = 0;
         bool budget_hit = false;
+        adaptive::ErrorBudget budget(target_error_);
+        double shadowed = 0;  // metric "error": pixels any corner map shadows
         for (;; ++level) {
             renderNewMaps(ctx, tree, level);
             if (level >= max_depth_ || cells.empty()) break;
@@ -148,13 +163,22 @@ public:
             int queued = 0;
             for (const auto& c : cells) queued += int(tree.comparisons(c).size());
             ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
-                map_compare_->begin(receivers, *maps_, light, compare_, queued);
+                const bool count_shadowed = error_metric_ && level == 0;
+                map_compare_->begin(receivers, *maps_, light, compare_, queued + count_shadowed);
                 for (const auto& c : cells)
                     for (auto [a, b] : tree.comparisons(c)) map_compare_->compare(a, b, level);
+                if (count_shadowed)
+                    map_compare_->countShadowed(tree.linear() ? std::array{0, 1, 0, 1}
+                                                              : std::array{0, 1, 2, 3});
                 counts = map_compare_->end();
+                if (count_shadowed) {
+                    shadowed = counts.back().pixels;
+                    counts.pop_back();
+                }
             });
             comparisons += static_cast<int>(counts.size());
-            cells = splitCells(tree, cells, counts, area, budget_hit);
+            cells = error_metric_ ? splitByError(tree, cells, counts, shadowed, budget, budget_hit)
+                                  : splitCells(tree, cells, counts, area, budget_hit);
         }
         // The diagnostic: where comparisons in the camera view disagreed, and how deep.
         if (!light_centre_ && comparisons > 0) {
@@ -204,9 +228,37 @@ public:
         st["queries"] = st.value("queries", 0) + comparisons;
         st["depth_reached"] = std::max(st.value("depth_reached", 0), depth_reached);
         st["map_budget_hit"] = st.value("map_budget_hit", false) || budget_hit;
+        if (error_metric_)
+            st["estimated_error"] = std::max(st.value("estimated_error", 0.0), budget.estimate());
     }
 
 private:
+    // Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
+    // order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
+    std::vector<adaptive::QuadtreeCell> splitByError(
+        adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
+        const std::vector<adaptive::CompareResult>& counts, double shadowed,
+        adaptive::ErrorBudget& budget, bool& budget_hit) const {
+        std::vector<double> errors;
+        for (size_t i = 0, q = 0; i < cells.size(); ++i) {
+            double disagreeing = 0;  // the worse diagonal
+            for (size_t k = 0; k < tree.comparisons(cells[i]).size(); ++k, ++q)
+                disagreeing = std::max(disagreeing, counts[q].pixels);
+            const double share = std::ldexp(1.0, -(tree.linear() ? 1 : 2) * cells[i].depth);
+            errors.push_back(adaptive::cellError(share, disagreeing, shadowed));
+        }
+        std::vector<adaptive::QuadtreeCell> next;
+        for (size_t i : budget.choose(errors)) {
+            if (int(tree.samples().size()) + tree.newSamples(cells[i]) > max_maps_) {
+                budget_hit = true;
+                budget.refused(errors[i]);
+                continue;
+            }
+            for (const auto& child : tree.split(cells[i])) next.push_back(child);
+        }
+        return next;
+    }
+
     // Splits the CELLS whose comparisons (COUNTS, in comparisons() order) fail the metric, most
     // disagreeing first so that the map budget goes where it matters; returns their children.
     std::vector<adaptive::QuadtreeCell> splitCells(
@@ -325,6 +377,8 @@ private:
         return tree.linear() ? per_axis : per_axis * per_axis;
     }
 
+    bool error_metric_;
+    double target_error_;
     double epsilon_;
     bool screen_metric_;
     double tile_epsilon_;

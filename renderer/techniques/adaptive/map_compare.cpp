@@ -79,12 +79,24 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
 }
 
 void MapCompare::compare(int a, int b, int level) {
+    queue(0, {a, b, a, b}, level);
+}
+
+void MapCompare::countShadowed(std::array<int, 4> views) {
+    queue(1, views, 0);
+}
+
+void MapCompare::queue(int mode, std::array<int, 4> views, int level) {
     if (used_ == static_cast<int>(queries_.size()))
         queries_.push_back(gl::createQuery(GL_SAMPLES_PASSED, "adaptive comparison"));
     const int q = used_++;
-    gl::setUniform(program_, "u_view_a", a);
-    gl::setUniform(program_, "u_view_b", b);
+    gl::setUniform(program_, "u_mode", mode);
+    gl::setUniform(program_, "u_view_a", views[0]);
+    gl::setUniform(program_, "u_view_b", views[1]);
+    gl::setUniform(program_, "u_view_c", views[2]);
+    gl::setUniform(program_, "u_view_d", views[3]);
     gl::setUniform(program_, "u_level", level);
+    // Mode 1 counts no tiles (its slot stays zero).
     gl::setUniform(program_, "u_tile_slot", q * tiles_);
     glBeginQuery(GL_SAMPLES_PASSED, queries_[static_cast<size_t>(q)].id());
     fullscreen_.draw();

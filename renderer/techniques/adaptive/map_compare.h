@@ -2,6 +2,7 @@
 // the light centre's), disagreeing pixels counted by an occlusion query and per screen tile.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -45,6 +46,9 @@ public:
                const scene::RectLight& light, const CompareSettings& settings, int count);
     // Queues the comparison of views A and B.
     void compare(int a, int b, int level);
+    // Queues a count of the pixels that any of VIEWS shadows (hard tests; no tile counts, no
+    // diagnostic level); its result comes in compare() order with the comparisons'.
+    void countShadowed(std::array<int, 4> views);
     // Restores state; the results of this series, in compare() order (blocking).
     std::vector<CompareResult> end();
     // Writes max(level + 1) of the disagreements of every series since the last
@@ -55,6 +59,8 @@ public:
     void clearLevels();
 
 private:
+    void queue(int mode, std::array<int, 4> views, int level);
+
     gl::Program program_;
     passes::Fullscreen fullscreen_;
     gl::Texture levels_;  // R32F, the G-buffer's size / stride
