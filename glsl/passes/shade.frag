@@ -7,6 +7,7 @@ in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2D u_normal;
 layout(binding = 2) uniform sampler2D u_albedo;
+layout(binding = 4) uniform isampler2D u_id;  // -1: background
 
 layout(location = 0) out vec4 o_beauty;      // rgb, a = coverage
 layout(location = 1) out vec4 o_visibility;
@@ -22,6 +23,6 @@ void main() {
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
     vec3 albedo = texelFetch(u_albedo, pix, 0).rgb;
     float vis;
-    o_beauty = vec4(shadePoint(pos.xyz, n, albedo, pix, vis), 1.0);
+    o_beauty = vec4(shadePoint(pos.xyz, n, albedo, texelFetch(u_id, pix, 0).r, pix, vis), 1.0);
     o_visibility = vec4(vis, 0.0, 0.0, 0.0);
 }

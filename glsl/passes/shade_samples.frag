@@ -69,7 +69,7 @@ void main() {
                   : rep_id >= 0                          ? pix
                                                          : ivec2(-1);
         float v;
-        radiance += shadePoint(p, normal, texelFetch(u_sample_albedo, at, 0).rgb, q, v);
+        radiance += shadePoint(p, normal, texelFetch(u_sample_albedo, at, 0).rgb, id, q, v);
         visibility += v;
     }
     float count = float(u_samples);

@@ -7,6 +7,7 @@
 #define PENUMBRA_SHADING_GLSL
 
 #include "common/bindings.glsl"
+#include "common/caster_flags.glsl"
 #include "common/light_horizon.glsl"
 #include "common/light_irradiance.glsl"
 
@@ -32,12 +33,14 @@ const float kPi = 3.14159265358979;
 // The share of light L's contribution at POS (normal N) that reaches it, from the technique's
 // layer VIS. Where the technique sampled the light, the contribution-weighted share of its
 // samples; where none of them lies above the horizon, nothing says the part above is hidden
-// (E has left out the rest): 1. Otherwise V counts the light's part below the tangent plane
-// as hidden (the receiver's own surface hides it from every light sample) while E already
-// leaves it out: V is divided by the share of the light above the plane, so that part is not
-// removed twice.
-float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n) {
+// (E has left out the rest): 1. Otherwise, on an object that casts (CASTS), V counts the
+// light's part below the tangent plane as hidden (the receiver's own surface hides it from
+// every light sample) while E already leaves it out: V is divided by the share of the light
+// above the plane, so that part is not removed twice. An object that casts no shadow does not
+// hide the light from itself: its V is the share that casters leave, B = V.
+float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n, bool casts) {
     if (vis.a > 0.0) return vis.b > 0.0 ? clamp(vis.g / vis.b, 0.0, 1.0) : 1.0;
+    if (!casts) return clamp(vis.r, 0.0, 1.0);
     float share = lightShareAboveHorizon(l.corners[0].xyz, l.corners[1].xyz - l.corners[0].xyz,
                                          l.corners[3].xyz - l.corners[0].xyz, pos, n);
     return share > 0.0 ? clamp(vis.r / share, 0.0, 1.0) : 0.0;
@@ -46,7 +49,8 @@ float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n) {
 // Radiance leaving POS (unit normal N, linear ALBEDO) lit by every light, with the visibility
 // layers of pixel VIS_PIX (fully visible where VIS_PIX.x < 0); VISIBILITY gets the
 // irradiance-weighted visibility (the plain mean where no light reaches the point unshadowed).
-vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, ivec2 vis_pix, out float visibility) {
+vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float visibility) {
+    bool casts = objectCasts(id);
     vec3 radiance = vec3(0.0);
     float num = 0.0, den = 0.0, plain = 0.0;
     for (int i = 0; i < u_light_count; ++i) {
@@ -56,7 +60,7 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, ivec2 vis_pix, out float visibili
         vec4 layer = vis_pix.x < 0 ? vec4(1.0, 1.0, 1.0, 1.0)
                                    : texelFetch(u_visibility, ivec3(vis_pix, i), 0);
         float v = layer.r;
-        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, n);
+        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, n, casts);
         num += l.radiance.w * e * v;
         den += l.radiance.w * e;
         plain += v;

@@ -102,6 +102,13 @@ GpuScene::GpuScene(const scene::Scene& scene) {
         const scene::Model* key = o.model.get();
         if (key && !models_.count(key)) models_[key] = uploadModel(*key);
     }
+    // Roles do not animate: the flags are uploaded once (at least one entry, for GL).
+    std::vector<int> flags(std::max<size_t>(scene.objects.size(), 1), 0);
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        flags[i] = scene::castsShadow(scene.objects[i].shadow) ? 1 : 0;
+    caster_flags_ = gl::createBuffer("caster flags");
+    glNamedBufferStorage(caster_flags_.id(), GLsizeiptr(flags.size() * sizeof(int)), flags.data(),
+                         0);
     update(scene);
 }
 

@@ -65,6 +65,9 @@ public:
     // World bounds of the objects that cast shadows (ShadowRole Both or Occluder).
     const Bounds& casterBounds() const { return caster_bounds_; }
     const Bounds& sceneBounds() const { return scene_bounds_; }
+    // Per object of the scene (by its index, the G-buffer id): 1 when it casts shadows (role
+    // both or occluder), else 0; an SSBO of int for glsl/common/caster_flags.glsl.
+    const gl::Buffer& casterFlags() const { return caster_flags_; }
     size_t triangleCount() const;
 
     // Receivers: role receiver or both; ReceiversOnly: role receiver.
@@ -79,6 +82,7 @@ private:
     std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;
     std::vector<GpuObject> objects_;
     Bounds caster_bounds_, scene_bounds_;
+    gl::Buffer caster_flags_;
 };
 
 }  // namespace penumbra::passes

@@ -15,10 +15,11 @@ struct GpuLight {  // std430 mirror of GpuLight in glsl/passes/shading.glsl
 };
 }  // namespace
 
-Shade::Shade(int width, int height, int samples)
+Shade::Shade(int width, int height, int samples, const gl::Buffer& caster_flags)
     : width_(width),
       height_(height),
       samples_(samples),
+      caster_flags_(caster_flags),
       beauty_(gl::createTexture2D(GL_RGBA32F, width, height, "beauty")),
       visibility_(gl::createTexture2D(GL_R32F, width, height, "visibility")),
       fbo_(gl::createFramebuffer("shade")),
@@ -66,6 +67,8 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glBindTextureUnit(1, gbuffer.normal().id());
     glBindTextureUnit(2, gbuffer.albedo().id());
     glBindTextureUnit(3, visibility_layers.id());
+    glBindTextureUnit(4, gbuffer.id().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     gl::setUniform(program_, "u_light_count", static_cast<int>(lights.size()));
     gl::setUniform(program_, "u_env_layer", env_layer);
     fullscreen_.draw();
@@ -93,6 +96,7 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     glBindTextureUnit(6, samples.normal().id());
     glBindTextureUnit(7, samples.albedo().id());
     glBindTextureUnit(8, samples.id().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     // 1. Stencil 1 where a sample differs from the representative (colour untouched).
     const GLint zero = 0;
     glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &zero);

@@ -26,7 +26,9 @@ enum class SampleGuide {
 class Shade {
 public:
     // SAMPLES > 1 also builds the multisampled programs (renderSamples()).
-    Shade(int width, int height, int samples = 1);
+    // CASTER_FLAGS (GpuScene::casterFlags(), which must outlive this) says which objects cast:
+    // beauty treats the horizon of those differently (glsl/passes/shading.glsl).
+    Shade(int width, int height, int samples, const gl::Buffer& caster_flags);
     // One shading per pixel: the G-buffer point with its own visibility layers.
     // ENV_LAYER >= 0: the layer of VISIBILITY_LAYERS that holds the environment's irradiance
     // (shadowed rgb, unshadowed luminance in a), added to beauty.
@@ -47,6 +49,7 @@ private:
     void uploadLights(const std::vector<scene::RectLight>& lights);
 
     int width_, height_, samples_;
+    const gl::Buffer& caster_flags_;
     SampleGuide guide_ = SampleGuide::Depth;
     gl::Texture beauty_, visibility_, stencil_;
     gl::Framebuffer fbo_;

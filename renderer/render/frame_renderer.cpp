@@ -19,7 +19,7 @@ FrameRenderer::FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& firs
       sample_gbuffer_(first.image.samples > 1 ? std::make_unique<passes::SampleGBuffer>(
                                                     width_, height_, first.image.samples)
                                               : nullptr),
-      shade_(width_, height_, first.image.samples) {
+      shade_(width_, height_, first.image.samples, gpu_.casterFlags()) {
     setParams(params);
     gl::checkErrors("prepare");
 }

@@ -23,6 +23,7 @@
 #ifndef SEARCH_STEPS
 #define SEARCH_STEPS 0
 #endif
+#include "common/caster_flags.glsl"
 #include "common/light_horizon.glsl"
 #include "techniques/css/basis_layout.glsl"
 
@@ -31,6 +32,7 @@ layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
 layout(binding = 2) uniform sampler2D u_normal;
 layout(binding = 3) uniform sampler2DArray u_basis_search;  // u_basis, bilinear in one level
+layout(binding = 4) uniform isampler2D u_id;                // the G-buffer's object ids
 
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
@@ -145,7 +147,8 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
 
 // The fraction of the light above the tangent plane of receiver P (normal N): the part below
 // is hidden by the receiver's own surface, as every light-sample shadow map sees it for a
-// closed object (common/light_horizon.glsl).
+// closed object that casts (common/light_horizon.glsl). Objects that cast no shadow do not
+// hide the light from themselves (main() takes 1 for them).
 float aboveHorizon(vec3 p, vec3 n) {
     vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right + u_light_size.y * u_light_up);
     return lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
@@ -161,7 +164,9 @@ void main() {
     o_filter_width = vec4(0.0);
     vec3 dl = pos.xyz - u_light_centre;
     float zw = dot(dl, u_light_forward);
-    float horizon = aboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz));
+    float horizon = objectCasts(texelFetch(u_id, pix, 0).r)
+                        ? aboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz))
+                        : 1.0;
     o_visibility = vec4(horizon, 0.0, 0.0, 0.0);
     if (zw <= u_near || horizon == 0.0) return;  // nearer than every caster, or facing away
     vec2 texels_per_tan = u_map_size / u_window_size;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "renderer/passes/bindings.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/css/csm_maps.h"
@@ -91,6 +92,9 @@ private:
         glBindTextureUnit(2, ctx.gbuffer.normal().id());
         glBindTextureUnit(3, maps_->filtered(filter).id());  // through the search sampler
         glBindSampler(3, maps_->searchSampler().id());
+        glBindTextureUnit(4, ctx.gbuffer.id().id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
+                         ctx.gpu.casterFlags().id());
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_window_lo", w.lo);
