@@ -10,6 +10,7 @@
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
 #endif
+#include "common/caster_flags.glsl"
 #include "common/light_horizon.glsl"
 
 in vec2 v_uv;
@@ -31,6 +32,7 @@ uniform vec2 u_ssm_lo;
 uniform vec2 u_ssm_size;
 uniform int u_shadowed;     // 0: no occluder lies between the light and a receiver
 uniform int u_layer_count;  // receiver layers
+uniform int u_self_horizon;  // 1: objects that cast also receive (layers > 1), horizon included
 uniform float u_near;       // the soft-shadow window's depth range
 uniform float u_range;
 uniform float u_depth_bias;
@@ -137,7 +139,18 @@ void main() {
             layer = nearest;
         }
     }
-    o_visibility = vec4(1.0 - clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
-    o_occlusion = vec4(occlusion, 0.0, 0.0, 0.0);
+    float v = 1.0 - clamp(occlusion, 0.0, 1.0);
+    if (u_self_horizon != 0 && objectCasts(id)) {
+        // An object's patches never shadow the surface they lie on (splat.vert): the light's
+        // part below that surface's horizon, which the object itself hides, is taken here, in
+        // closed form, as css does; the other casters' occlusion falls on the rest alike.
+        vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+        vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
+                                              u_light_size.y * u_light_up);
+        v *= lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
+                                    u_light_size.y * u_light_up, pos.xyz, n);
+    }
+    o_visibility = vec4(v, 0.0, 0.0, 0.0);
+    o_occlusion = vec4(1.0 - v, 0.0, 0.0, 0.0);
     o_layer = vec4(float(layer), 0.0, 0.0, 0.0);
 }

@@ -11,6 +11,7 @@
 
 #include "renderer/core/error.h"
 #include "renderer/gl/dynamic_buffer.h"
+#include "renderer/passes/bindings.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/registry_entries.h"
@@ -277,6 +278,7 @@ private:
         glBindTextureUnit(7, receiver_layers_->depth.id());
         glBindTextureUnit(8, receiver_layers_->ids.id());
         gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+        gl::setUniform(p, "u_self_horizon", layers_ > 1 ? 1 : 0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCounters, counters_.id());
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
@@ -335,9 +337,12 @@ private:
         if (two_sided_) glBindTextureUnit(4, soft_maps_[1]->occlusion.id());
         glBindTextureUnit(5, receiver_layers_->depth.id());
         glBindTextureUnit(6, ctx.gbuffer.normal().id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
+                         ctx.gpu.casterFlags().id());
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+        gl::setUniform(p, "u_self_horizon", layers_ > 1 ? 1 : 0);
         gl::setUniform(p, "u_near", soft.near);
         gl::setUniform(p, "u_range", soft.far - soft.near);
         gl::setUniform(p, "u_depth_bias", depth_bias_);
