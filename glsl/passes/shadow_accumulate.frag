@@ -3,7 +3,10 @@
 // (additive blending), and in g and b sum_k weight_k c_k lit_k and sum_k weight_k c_k with c_k
 // the sample's unshadowed contribution cos cos / r^2, a > 0 (the shade pass's beauty weighting). Normal-offset and constant bias; PCF over a PCF x PCF texel kernel.
 // Every view of a batch shares the light's frame, so the receiver is projected once into that
-// frame and each view costs a few scalar operations and one depth-compare fetch.
+// frame and each view costs a few scalar operations and one depth-compare fetch. On an object
+// that casts, a sample below the receiver's tangent plane counts as hidden: the object's own
+// (closed) surface hides it, as `exact`'s rays find, though the normal offset lights it.
+#include "common/caster_flags.glsl"
 #include "common/sample_view.glsl"
 
 // The three lookup vectors of every view (SampleView's light_origin, frustum, depth), as a
@@ -16,6 +19,7 @@ in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2D u_normal;
 layout(binding = 2) uniform sampler2DArrayShadow u_maps;
+layout(binding = 3) uniform isampler2D u_id;
 
 uniform int u_view_base;
 uniform int u_count;
@@ -67,13 +71,14 @@ void main() {
     vec3 q0 = vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up),
                    dot(pos.xyz, u_light_forward));
     vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
+    bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
     float sum = 0.0, weighted = 0.0, weights = 0.0;
     for (int i = 0; i < u_count; ++i) {
         int k = u_view_base + i;
         float w = u_lookups[3 * k + 2].y;
-        float lit = lookup(i, q);
         // d: receiver to sample; cos_r |d| = n.d, cos_l |d| = the receiver's depth beyond it.
         vec3 d = u_lookups[3 * k].xyz - q0;
+        float lit = casts && dot(nl, d) <= 0.0 ? 0.0 : lookup(i, q);
         float d2 = dot(d, d);
         float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
         sum += w * lit;

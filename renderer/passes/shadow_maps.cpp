@@ -149,12 +149,14 @@ ShadowAccumulate::ShadowAccumulate()
                                 {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"})) {}
 
 void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base,
-                              int count, const scene::RectLight& light,
-                              const ShadowTestSettings& s) {
+                              int count, const scene::RectLight& light, const ShadowTestSettings& s,
+                              const gl::Buffer& caster_flags) {
     glUseProgram(program_.id());
     glBindTextureUnit(0, gbuffer.position().id());
     glBindTextureUnit(1, gbuffer.normal().id());
     glBindTextureUnit(2, batch.depth().id());
+    glBindTextureUnit(3, gbuffer.id().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags.id());
     gl::setUniform(program_, "u_view_base", view_base);
     gl::setUniform(program_, "u_count", std::min(count, batch.layers()));
     gl::setUniform(program_, "u_pcf", s.pcf);

@@ -73,8 +73,11 @@ class ShadowAccumulate {
 public:
     ShadowAccumulate();
     // LIGHT gives the frame (right, up, forward) shared by every view of the batch.
+    // CASTER_FLAGS (GpuScene::casterFlags()): on objects that cast, a sample below the
+    // receiver's tangent plane is hidden by the receiver's own surface.
     void render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base, int count,
-                const scene::RectLight& light, const ShadowTestSettings& settings);
+                const scene::RectLight& light, const ShadowTestSettings& settings,
+                const gl::Buffer& caster_flags);
 
 private:
     gl::Program program_;

@@ -45,7 +45,8 @@ int LightSampler::render(render::FrameContext& ctx, std::span<const LightSample>
             glEnable(GL_BLEND);
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
-            accumulate_->render(ctx.gbuffer, *batch_, base, count, light, settings_.test);
+            accumulate_->render(ctx.gbuffer, *batch_, base, count, light, settings_.test,
+                                ctx.gpu.casterFlags());
             glDisable(GL_BLEND);
         });
     }

@@ -201,7 +201,8 @@ public:
                 const float scale = static_cast<float>(1.0 / sum);
                 glBlendColor(scale, scale, scale, scale);
                 glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);  // dst * scale; the source adds 0
-                accumulate_->render(ctx.gbuffer, *maps_, 0, 0, light, settings_.test);
+                accumulate_->render(ctx.gbuffer, *maps_, 0, 0, light, settings_.test,
+                                    ctx.gpu.casterFlags());
                 glBlendFunc(GL_ONE, GL_ONE);
                 glDisable(GL_BLEND);
                 glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -365,7 +366,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
         accumulate_->render(ctx.gbuffer, batch, view_base, count, ctx.currentLight(),
-                            settings_.test);
+                            settings_.test, ctx.gpu.casterFlags());
         glDisable(GL_BLEND);
         glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
