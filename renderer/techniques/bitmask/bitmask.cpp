@@ -34,9 +34,9 @@ constexpr std::array kBitmaskParams = {
     enumParam("accel", "ysm", "hsm|mssm|ysm",
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
     intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
-    enumParam("occluders", "micropatch", "micropatch|microquad|microrect",
-              "micro-occluders: texels, quads between texel centres (bitmask only), or "
-              "microrects merged per level (5.2)"),
+    enumParam("occluders", "microrect", "micropatch|microquad|microrect",
+              "micro-occluders: microrects merged per level (5.2), texels, or quads between "
+              "texel centres (bitmask only)"),
     enumParam("visibility", "bitmask", "bitmask|area",
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
