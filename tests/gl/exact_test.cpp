@@ -254,9 +254,11 @@ TEST(ExactGL, LoneSphereWithoutCastersForEveryTechnique) {
 
 TEST(ExactGL, LoneSphereCastingOnItselfForEveryTechnique) {
     // The sphere casts too (the default role): its own surface hides the light below each
-    // point's horizon from every light sample, and E has left that part out already. bitmask
-    // and css shadow the sphere by its own upper half (their visibility is wrong on this scene:
-    // the conformance issue); ssm's layers keep a patch off the surface it lies on.
+    // point's horizon from every light sample, and E has left that part out already. css
+    // shadows the sphere by its own upper half (its visibility is wrong on this scene: the
+    // conformance issue); bitmask is within 0.4 % in the mean but 5 % of its pixels, near the
+    // rim seen from the light, still differ by more than 2 %; ssm's layers keep a patch off the
+    // surface it lies on.
     checkLoneSphere({}, "casting", {"bitmask", "css"});
 }
 

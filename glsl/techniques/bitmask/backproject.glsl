@@ -2,12 +2,12 @@
 // an HSM level inside a search area that lies in front of the receiver is projected from the
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
 // (BITMASK 1, four half-plane table lookups) or adds its area (BITMASK 0). GAP_FILL 1 extends
-// a micropatch towards a farther neighbour micropatch so their projections leave no gap.
+// a micro-occluder towards a farther neighbour of its level so their projections leave no gap.
 // MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
-// the extent and depth come from their own mip chains (section 5.2). The light's part below
-// the receiver's tangent plane counts as hidden (its own surface hides it for a closed object,
-// as in `exact`): those samples are set too (BITMASK 1), or the area share above the plane
-// scales the visibility (BITMASK 0). Needs search.glsl.
+// the extent and depth come from their own mip chains (section 5.2), with the same extension.
+// On a receiver that also casts, the light's part below its tangent plane counts as hidden
+// (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
+// area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
 #if MICRORECTS
 layout(binding = 9) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
 layout(binding = 10) uniform sampler2D u_rect_depth;
@@ -82,7 +82,7 @@ int maskIndex(float u) {
 }
 #endif
 
-// Back-projects the micropatches of LEVEL in AREA (level-0 texels) for receiver P (tangent
+// Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
 // plane HORIZON); returns visibility, COUNT = micro-occluders back-projected.
 float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
 #if MICROQUADS

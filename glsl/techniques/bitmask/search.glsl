@@ -33,11 +33,12 @@ uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - 
 // normal by u_normal_offset level-0 texels and, for a receiver that also casts, by up to
 // 2^LEVEL - 1 more as its surface's slope from the light needs (a level-l micropatch of its own
 // surface holds the nearest depth of 2^l x 2^l texels, so it lies up to that much nearer the
-// light: a level-0 offset left coarse levels shadowing their own surface in bands); false where the pixel has no receiving geometry or lies behind the light. HORIZON
-// is its tangent plane seen from the light: the height of light point (u, v) (the light as the
-// unit square, u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only a
-// receiver that casts hides the light below its plane (as its far side does for `exact`);
-// others get the plane 1 (all above).
+// light: a level-0 offset left coarse levels shadowing their own surface in bands); false
+// where the pixel has no receiving geometry or lies behind the light. HORIZON is its tangent
+// plane seen from the light: the height of light point (u, v) (the light as the unit square,
+// u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only a receiver
+// that casts hides the light below its plane (as its far side does for `exact`); others get
+// the plane 1 (all above).
 bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     p = vec3(0.0);
     horizon = vec3(1.0, 0.0, 0.0);
