@@ -1,7 +1,7 @@
-// `bitmask` (Schwarz & Stamminger) on small scenes: accuracy against `reference` N = 32 on the
-// default scene, classification without back-projection, budgets and their statistics, budget
-// maps (procedural and from an image), the acceleration structures and the area-accumulation
-// alternative.
+// `bitmask` (Schwarz & Stamminger) on small scenes: accuracy against `exact` (kGroundTruth) on
+// the default scene and a lone sphere under a wide light, classification without back-projection,
+// budgets and their statistics, budget maps (procedural and from an image), the acceleration
+// structures and the area-accumulation alternative.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,20 +26,19 @@ std::string bitmask(const std::string& extra = "") {
     return R"({"name": "bitmask", "map_size": 256)" + extra + "}";
 }
 
-const std::vector<float>& truthOf(const std::string& scene) {
+// `exact` (kGroundTruth) of SCENE, the last one kept.
+const penumbra::output::Image& truthImage(const std::string& scene) {
     static std::string cached_scene;
-    static std::vector<float> cached;
+    static penumbra::output::Image cached;
     if (cached_scene != scene) {
-        // Still `reference` N = 32, the truth these bounds were set against: against `exact`
-        // the image-wide error of unlimited bitmask is 0.062, not 0.03, because on the objects'
-        // own grazing surfaces it counts light as visible that exact's rays find behind the
-        // surface (floor alone: 0.0063). The conformance issue moves this to `exact`.
-        auto ref = renderScene(scene, {{"technique", R"({"name": "reference", "samples": 32,
-                                                         "map_size": 512})"}});
-        cached = channel(ref, "visibility");
+        cached = renderScene(scene, {{"technique", penumbra::testing::kGroundTruth}});
         cached_scene = scene;
     }
     return cached;
+}
+
+const std::vector<float>& truthOf(const std::string& scene) {
+    return channel(truthImage(scene), "visibility");
 }
 
 struct Run {
@@ -57,31 +56,38 @@ Run run(const std::string& scene, const std::string& technique) {
 
 }  // namespace
 
-TEST(BitmaskGL, UnlimitedBudgetMatchesReferenceOnDefaultScene) {
+TEST(BitmaskGL, UnlimitedBudgetMatchesExactOnDefaultScene) {
     auto r = run("adaptive_default.json", bitmask(R"(, "budget": 0)"));
     std::printf(
         "bitmask unlimited, 256 bits, map 256, default scene: MAE %.5f; %.1f%% "
         "back-project, %.1f +- %.1f micro-occluders\n",
         r.mae, 100.0 * r.stats.value("backprojecting_share", 0.0),
         r.stats.value("micro_occluders_mean", 0.0), r.stats.value("micro_occluders_stddev", 0.0));
-    // The issue's bound for unlimited budget and the 256-bit jittered bitmask.
+    // The conformance issue's bound for unlimited budget (measured 0.0183 against `exact`; 0.062
+    // before the light below the objects' tangent planes counted as hidden).
     EXPECT_LE(r.mae, 0.03);
 }
 
-TEST(BitmaskGL, ClassesNeedNoBackprojectionAndMatchTheReference) {
+TEST(BitmaskGL, ClassesNeedNoBackprojectionAndMatchExact) {
     // The MSSM's tight depth ranges find umbra that the HSM's 2 x 2 coarse queries miss.
     auto r = run("adaptive_default.json", bitmask(R"(, "budget": 0, "accel": "mssm")"));
     const auto& cls = channel(r.image, "bitmask.class");
     const auto& vis = channel(r.image, "visibility");
     const auto& occ = channel(r.image, "bitmask.occluders");
+    const auto& id = channel(r.image, "id");
     const auto& truth = truthOf("adaptive_default.json");
     long lit = 0, lit_wrong = 0, umbra = 0, umbra_wrong = 0, penumbra = 0;
     double occluders = 0;
     for (size_t i = 0; i < cls.size(); ++i) {
         if (cls[i] == 0.0f) {
+            // Lit: no micro-occluder in front, only the light below the tangent plane of an
+            // object that casts is hidden; the floor (object 0) receives only and sees it all.
             ++lit;
-            lit_wrong += truth[i] < 0.95f;
-            EXPECT_EQ(vis[i], 1.0f);
+            lit_wrong += truth[i] < vis[i] - 0.05f;
+            if (id[i] == 0.0f) {
+                EXPECT_EQ(vis[i], 1.0f);
+            }
+            EXPECT_LE(vis[i], 1.0f);
             EXPECT_EQ(occ[i], 0.0f);
         } else if (cls[i] == 2.0f) {
             ++umbra;
@@ -93,13 +99,13 @@ TEST(BitmaskGL, ClassesNeedNoBackprojectionAndMatchTheReference) {
         }
     }
     std::printf(
-        "lit %ld (%ld below 0.95 in the reference), umbra %ld (%ld above 0.05), "
+        "lit %ld (%ld darker by 0.05 in exact), umbra %ld (%ld above 0.05), "
         "penumbra %ld\n",
         lit, lit_wrong, umbra, umbra_wrong, penumbra);
     EXPECT_GT(umbra, 100);
     EXPECT_GT(lit, 1000);
-    // Classification is exact for the shadow map's occluders; what differs from the reference
-    // is the map's own texel-sized silhouette and normal-offset error: a 1 % allowance.
+    // Classification is exact for the shadow map's occluders; what differs from `exact` is the
+    // map's own texel-sized silhouette and normal-offset error: a 1 % allowance.
     EXPECT_LE(lit_wrong, lit / 100);
     EXPECT_LE(umbra_wrong, umbra / 100 + 1);
     // The statistics count exactly the penumbra pixels and their micro-occluders.
@@ -130,9 +136,9 @@ TEST(BitmaskGL, BudgetBoundsMicroOccludersPerPixel) {
             "(max %.0f)\n",
             budget, r.mae, 100.0 * r.stats.value("backprojecting_share", 0.0), mean,
             r.stats.value("micro_occluders_stddev", 0.0), most);
-        if (budget > 0) {
-            EXPECT_LE(most, float(budget * budget));
-        }
+        // Budget 0 picks coarser levels where the area spans more than 64 texels (65 x 65).
+        const int per_axis = budget > 0 ? budget : 65;
+        EXPECT_LE(most, float(per_axis * per_axis));
         EXPECT_LT(mean, last_mean);
         last_mean = mean;
     }
@@ -227,7 +233,7 @@ TEST(BitmaskGL, BadParametersAreInputErrors) {
 TEST(BitmaskGL, MicrorectsBeatMicropatchesAtCoarseLevels) {
     // Budget 4 without smoothing: every penumbra pixel uses a coarse level (Fig. 12).
     const std::string coarse = R"(, "budget": 4, "smooth": false, "map_size": 512)";
-    auto patches = run("adaptive_default.json", bitmask(coarse));
+    auto patches = run("adaptive_default.json", bitmask(coarse + R"(, "occluders": "micropatch")"));
     auto rects = run("adaptive_default.json", bitmask(coarse + R"(, "occluders": "microrect")"));
     auto rects_area = run("adaptive_default.json",
                           bitmask(coarse + R"(, "occluders": "microrect", "visibility": "area")"));
@@ -240,20 +246,32 @@ TEST(BitmaskGL, MicrorectsBeatMicropatchesAtCoarseLevels) {
 
 TEST(BitmaskGL, LevelZeroMicrorectsAreMicropatches) {
     const std::string scene = "adaptive_default.json";
-    auto patches = run(scene, bitmask(R"(, "budget": 0, "gap_fill": false)")).image;
+    auto patches = run(scene, bitmask(R"(, "budget": 0, "occluders": "micropatch")")).image;
     auto rects = run(scene, bitmask(R"(, "budget": 0, "occluders": "microrect")")).image;
-    // At level 0 a microrect is its texel with the texel's depth: the same rectangles. Their far
-    // edges are computed as lo + (x + 1) t instead of (lo + x t) + t, a float rounding that can
-    // move an edge across one light sample: at most 1 of 256 bits.
-    EXPECT_LE(penumbra::testing::maxAbsDifference(channel(patches, "visibility"),
-                                                  channel(rects, "visibility")),
-              1.0 / 256.0 + 1e-6);
+    // At level 0 a microrect is its texel with the texel's depth: the same rectangles, with the
+    // same gap extension. Their far edges are computed as lo + (x + 1) t instead of
+    // (lo + x t) + t, a float rounding that can move an edge across one light sample: at most 1
+    // of 256 bits. (Budget 0 uses coarser levels where an area spans more than 64 texels: those
+    // pixels differ.)
+    const auto& vp = channel(patches, "visibility");
+    const auto& vr = channel(rects, "visibility");
+    const auto& level = channel(patches, "bitmask.level");
+    double most = 0;
+    long compared = 0;
+    for (size_t i = 0; i < vp.size(); ++i) {
+        if (level[i] != 0.0f) continue;
+        most = std::max(most, double(std::fabs(vp[i] - vr[i])));
+        ++compared;
+    }
+    EXPECT_GT(compared, 10000);
+    EXPECT_LE(most, 1.0 / 256.0 + 1e-6);
 }
 
 TEST(BitmaskGL, MicroquadsUnderestimateWhereMicropatchesOverestimate) {
     auto quads =
         run("adaptive_default.json", bitmask(R"(, "budget": 0, "occluders": "microquad")"));
-    auto patches = run("adaptive_default.json", bitmask(R"(, "budget": 0)"));
+    auto patches =
+        run("adaptive_default.json", bitmask(R"(, "budget": 0, "occluders": "micropatch")"));
     double lit_quads = 0, lit_patches = 0;
     for (float v : channel(quads.image, "visibility")) lit_quads += v;
     for (float v : channel(patches.image, "visibility")) lit_patches += v;
@@ -367,4 +385,58 @@ TEST(BitmaskGL, BudgetMapImage) {
         EXPECT_NE(std::string(e.what()).find("technique.budget_map: "), std::string::npos)
             << e.what();
     }
+}
+
+TEST(BitmaskGL, UnlimitedBudgetBoundsTheSearchWithCoarserLevels) {
+    // scenes/conformance/light_size_2.json: a 0.35 m ball 0.9 m up under a 2 m light 3 m up
+    // (object 0 the floor), at 128 x 96: a floor pixel's search area spans about 300 texels of
+    // a 512 map.
+    const std::string scene = "../../../scenes/conformance/light_size_2.json";
+    const std::vector<penumbra::scene::Override> size = {{"image.width", "128"},
+                                                         {"image.height", "96"}};
+    auto with = [&](const std::string& technique) {
+        auto o = size;
+        o.push_back({"technique", technique});
+        return o;
+    };
+    const auto truth = renderScene(scene, with(penumbra::testing::kGroundTruth));
+    const auto img = renderScene(scene, with(bitmask(R"(, "budget": 0, "map_size": 512)")));
+    const double floor = penumbra::testing::floorShadowMae(truth, img);
+    float most = 0;
+    for (float n : channel(img, "bitmask.occluders")) most = std::max(most, n);
+    std::printf("unlimited, map 512, 2 m light: floor MAE %.5f, at most %.0f micro-occluders\n",
+                floor, most);
+    // Level 0 over the whole area back-projected up to 512 x 512 texels per pixel: seconds per
+    // frame, and llvmpipe ends a shader's loops after 65535 iterations in all, so the rows past
+    // the first 128 of a 512-wide area were lost: a straight seam with the floor shadow
+    // missing beyond it (floor MAE 0.139 with micropatches). Coarser levels where the area
+    // spans more than 64 texels bound the work to 65 x 65 (measured 0.0189 with the default
+    // microrects, 0.0142 with micropatches).
+    EXPECT_LE(most, 65.0f * 65.0f);
+    EXPECT_LE(floor, 0.025);
+}
+
+// tests/data/gl/lone_sphere.json: a 0.5 m sphere (object 1) 1 m above the floor under a 4 m
+// light 1.5 m above the sphere's top, which crosses most of the sphere's horizons.
+TEST(BitmaskGL, LightBelowTheTangentPlaneIsHidden) {
+    const std::string scene = "lone_sphere.json";
+    auto r = run(scene, bitmask(R"(, "budget": 0)"));
+    const double sphere = penumbra::testing::objectShadowMae(truthImage(scene), r.image, 1);
+    std::printf("unlimited, lone sphere: sphere MAE %.5f\n", sphere);
+    // `exact` finds the light below a point's tangent plane behind the sphere's far side; a map
+    // from the light's centre cannot, and the sphere's lower half was lit (MAE 0.242). The
+    // samples below the plane are now set in the mask (measured 0.0075).
+    EXPECT_LE(sphere, 0.02);
+}
+
+TEST(BitmaskGL, CoarseLevelsDoNotShadowTheirOwnSurface) {
+    const std::string scene = "lone_sphere.json";
+    auto r = run(scene, bitmask(R"(, "budget": 4, "smooth": false, "occluders": "micropatch")"));
+    const double sphere = penumbra::testing::objectShadowMae(truthImage(scene), r.image, 1);
+    std::printf("budget 4, lone sphere: sphere MAE %.5f\n", sphere);
+    // A level-l micropatch of the sphere holds the nearest depth of 2^l x 2^l texels; with the
+    // receiver offset by level-0 texels it lay in front of its own surface and shadowed it in
+    // bands (MAE 0.130 with the horizon test above). The offset now scales with the level
+    // (measured 0.0074).
+    EXPECT_LE(sphere, 0.02);
 }

@@ -175,12 +175,15 @@ Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
     return {db / sb, dv / sv};
 }
 
-// css's V carries the closed-form horizon factor, exact where its filtered test is not: V's
-// error shrinks by the share above the horizon at grazing points while beauty's (V / share)
-// does not, and its floor errors lie where E is high. Measured 1.006x (lone sphere) and 1.024x
-// (default scene) of its visibility error; every other technique is strict.
-double cssSlack(std::string_view name) {
-    return name == "css" ? 1.05 : 1.0;
+// css's V carries the closed-form horizon factor, exact where its filtered test is not, and
+// bitmask's V the light samples below a casting receiver's tangent plane: V's error shrinks by
+// the share above the horizon at grazing points while beauty's (V / share) does not, and
+// their floor errors lie where E is high. Measured for css 1.006x (lone sphere) and 1.024x
+// (default scene) of its visibility error, for bitmask 0.18x and 1.071x (visibility error
+// 0.0118, beauty 0.0126; before it counted that light as visible, 0.0293 and 0.0153); every
+// other technique is strict.
+double horizonSlack(std::string_view name) {
+    return name == "css" ? 1.05 : name == "bitmask" ? 1.1 : 1.0;
 }
 
 std::string techniqueJson(std::string_view name) {
@@ -238,7 +241,7 @@ void checkLoneSphere(const std::vector<penumbra::scene::Override>& overrides, co
             label, std::string(t.name).c_str(), 100 * (sum - sum_exact) / sum_exact,
             100 * (sum - sum_form) / sum_form, off, n, 100 * worst, e.beauty, e.visibility);
         if (std::find(self_shadowed.begin(), self_shadowed.end(), t.name) != self_shadowed.end()) {
-            EXPECT_LE(e.beauty, cssSlack(t.name) * e.visibility) << t.name;
+            EXPECT_LE(e.beauty, horizonSlack(t.name) * e.visibility) << t.name;
             continue;
         }
         EXPECT_LE(std::fabs(sum - sum_exact) / sum_exact, 0.01) << t.name;
@@ -254,9 +257,11 @@ TEST(ExactGL, LoneSphereWithoutCastersForEveryTechnique) {
 
 TEST(ExactGL, LoneSphereCastingOnItselfForEveryTechnique) {
     // The sphere casts too (the default role): its own surface hides the light below each
-    // point's horizon from every light sample, and E has left that part out already. bitmask
-    // and css shadow the sphere by its own upper half (their visibility is wrong on this scene:
-    // the conformance issue); ssm's layers keep a patch off the surface it lies on.
+    // point's horizon from every light sample, and E has left that part out already. css
+    // shadows the sphere by its own upper half (its visibility is wrong on this scene: the
+    // conformance issue); bitmask is within 0.4 % in the mean but 5 % of its pixels, near the
+    // rim seen from the light, still differ by more than 2 %; ssm's layers keep a patch off the
+    // surface it lies on.
     checkLoneSphere({}, "casting", {"bitmask", "css"});
 }
 
@@ -274,7 +279,7 @@ TEST(ExactGL, EveryTechniquesBeautyErrorIsNoLargerThanItsVisibilityError) {
         const Errors e = errorsAgainst(exact, with(t.name));
         std::printf("default scene, %-9s: visibility error %.4f, beauty error %.4f\n",
                     std::string(t.name).c_str(), e.visibility, e.beauty);
-        EXPECT_LE(e.beauty, cssSlack(t.name) * e.visibility) << t.name;
+        EXPECT_LE(e.beauty, horizonSlack(t.name) * e.visibility) << t.name;
     }
 }
 

@@ -107,30 +107,36 @@ double closedFormShadowMae(const output::Image& img, double light_half, long min
 }
 
 namespace {
-// Mean |a - truth| over pixels where either is below 0.999 and, with ID, whose object is 0.
+// Mean |a - truth| over pixels where either is below 0.999 and, with ID, whose object is
+// OBJECT.
 double meanShadowDifference(const std::vector<float>& a, const std::vector<float>& truth,
-                            const std::vector<float>* id, long min_pixels) {
+                            const std::vector<float>* id, int object, long min_pixels) {
     double sum = 0;
     long n = 0;
     for (size_t i = 0; i < a.size(); ++i) {
-        if ((id && (*id)[i] != 0.0f) || (a[i] >= 0.999f && truth[i] >= 0.999f)) continue;
+        if ((id && (*id)[i] != float(object)) || (a[i] >= 0.999f && truth[i] >= 0.999f)) continue;
         sum += std::fabs(double(a[i]) - double(truth[i]));
         ++n;
     }
-    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of the "
-                             << (id ? "floor" : "image");
+    EXPECT_GT(n, min_pixels) << "the shadow should cover a good part of "
+                             << (id ? "object " + std::to_string(object) : "the image");
     return n ? sum / static_cast<double>(n) : 1.0;
 }
 }  // namespace
 
 double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels) {
+    return objectShadowMae(ref, test, 0, min_pixels);
+}
+
+double objectShadowMae(const output::Image& ref, const output::Image& test, int object,
+                       long min_pixels) {
     return meanShadowDifference(channel(test, "visibility"), channel(ref, "visibility"),
-                                &channel(test, "id"), min_pixels);
+                                &channel(test, "id"), object, min_pixels);
 }
 
 double shadowRegionMae(const std::vector<float>& a, const std::vector<float>& truth,
                        long min_pixels) {
-    return meanShadowDifference(a, truth, nullptr, min_pixels);
+    return meanShadowDifference(a, truth, nullptr, 0, min_pixels);
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

@@ -44,6 +44,9 @@ double closedFormShadowMae(const output::Image& img, double light_half, long min
 // (id 0), the receiver of the test scenes, where either is below 0.999. Expects more than
 // MIN_PIXELS such pixels.
 double floorShadowMae(const output::Image& ref, const output::Image& test, long min_pixels = 500);
+// The same over the pixels of object OBJECT (its index in the scene's objects).
+double objectShadowMae(const output::Image& ref, const output::Image& test, int object,
+                       long min_pixels = 500);
 
 // Shadow-region MAE: mean |a[i] - truth[i]| over pixels where either is below 0.999 (in
 // shadow). Expects more than MIN_PIXELS such pixels.

@@ -2,17 +2,23 @@
 // an HSM level inside a search area that lies in front of the receiver is projected from the
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
 // (BITMASK 1, four half-plane table lookups) or adds its area (BITMASK 0). GAP_FILL 1 extends
-// a micropatch towards a farther neighbour micropatch so their projections leave no gap.
+// a micro-occluder towards a farther neighbour of its level so their projections leave no gap.
 // MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
-// the extent and depth come from their own mip chains (section 5.2). Needs search.glsl.
+// the extent and depth come from their own mip chains (section 5.2), with the same extension.
+// On a receiver that also casts, the light's part below its tangent plane counts as hidden
+// (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
+// area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
 #if MICRORECTS
 layout(binding = 9) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
 layout(binding = 10) uniform sampler2D u_rect_depth;
 #endif
 #if BITMASK
 layout(binding = 6) uniform usampler2D u_masks;  // rows 0-1: x >= u words, rows 2-3: y >= v
+layout(binding = 13) uniform sampler2D u_samples;  // sample k at texel (k, 0): (u, v)
 uniform int u_mask_resolution;
 uniform float u_sample_count;
+#else
+#include "common/light_horizon.glsl"
 #endif
 
 // The light-plane coordinate of the ray from receiver coordinate P (depth PZ) through window
@@ -27,9 +33,48 @@ float maskVisibility(uvec4 m0, uvec4 m1) {
 }
 #endif
 
+#if BITMASK
+// The samples below the tangent plane HORIZON (receiverAt()), ORed into M0, M1 (bit k of the
+// 256 = word k / 32, words 0-3 in M0).
+void addBelowHorizon(vec3 horizon, inout uvec4 m0, inout uvec4 m1) {
+    if (!crossesHorizon(horizon)) return;
+    int n = int(u_sample_count);
+    for (int k = 0; k < n; ++k) {
+        vec2 s = texelFetch(u_samples, ivec2(k, 0), 0).xy;
+        if (horizon.x + dot(horizon.yz, s) >= 0.0) continue;
+        uint bit = 1u << uint(k & 31);
+        int w = k >> 5;
+        if (w < 4)
+            m0[w] |= bit;
+        else
+            m1[w - 4] |= bit;
+    }
+}
+#endif
+
+// The visibility of a receiver with no micro-occluder in front: the light above HORIZON.
+float litVisibility(vec3 horizon) {
+#if BITMASK
+    uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
+    addBelowHorizon(horizon, m0, m1);
+    return maskVisibility(m0, m1);
+#else
+    return horizonArea(horizon.x, horizon.y, horizon.z);
+#endif
+}
+
 #if MICROQUADS
 #include "techniques/bitmask/microquads.glsl"
 #endif
+
+// The distance of micro-occluder (X, Y) of LEVEL: its microrect's or its micropatch's.
+float occluderDepth(ivec2 xy, int level) {
+#if MICRORECTS
+    return texelFetch(u_rect_depth, xy, level).r;
+#else
+    return texelFetch(u_hsm, xy, level).r;
+#endif
+}
 
 #if BITMASK
 int maskIndex(float u) {
@@ -37,11 +82,11 @@ int maskIndex(float u) {
 }
 #endif
 
-// Back-projects the micropatches of LEVEL in AREA (level-0 texels) for receiver P; returns
-// visibility, COUNT = micro-occluders back-projected.
-float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
+// Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
+// plane HORIZON); returns visibility, COUNT = micro-occluders back-projected.
+float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
 #if MICROQUADS
-    return backprojectQuads(p, pz, area, level, count);
+    return backprojectQuads(p, horizon, pz, area, level, count);
 #endif
     count = 0;
     int n = u_map_size >> level;
@@ -49,30 +94,28 @@ float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
 #if BITMASK
     uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
+    addBelowHorizon(horizon, m0, m1);
 #else
     float occluded = 0.0;
 #endif
     for (int y = r.y; y <= r.w; ++y)
         for (int x = r.x; x <= r.z; ++x) {
-#if MICRORECTS
-            float zo = texelFetch(u_rect_depth, ivec2(x, y), level).r;
+            float zo = occluderDepth(ivec2(x, y), level);
             if (zo >= pz) continue;
             ++count;
+#if MICRORECTS
             vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
             vec2 w0 = u_win_lo + e.xy * u_texel, w1 = u_win_lo + (e.zw + 1.0) * u_texel;
 #else
-            float zo = texelFetch(u_hsm, ivec2(x, y), level).r;
-            if (zo >= pz) continue;
-            ++count;
             vec2 w0 = u_win_lo + vec2(x, y) * t, w1 = w0 + t;
 #endif
             vec2 l0 = vec2(onLight(w0.x, p.x, p.z, zo), onLight(w0.y, p.y, p.z, zo));
             vec2 l1 = vec2(onLight(w1.x, p.x, p.z, zo), onLight(w1.y, p.y, p.z, zo));
-#if GAP_FILL && !MICRORECTS
-            float zl = x > 0 ? texelFetch(u_hsm, ivec2(x - 1, y), level).r : pz;
-            float zr = x < n - 1 ? texelFetch(u_hsm, ivec2(x + 1, y), level).r : pz;
-            float zd = y > 0 ? texelFetch(u_hsm, ivec2(x, y - 1), level).r : pz;
-            float zu = y < n - 1 ? texelFetch(u_hsm, ivec2(x, y + 1), level).r : pz;
+#if GAP_FILL
+            float zl = x > 0 ? occluderDepth(ivec2(x - 1, y), level) : pz;
+            float zr = x < n - 1 ? occluderDepth(ivec2(x + 1, y), level) : pz;
+            float zd = y > 0 ? occluderDepth(ivec2(x, y - 1), level) : pz;
+            float zu = y < n - 1 ? occluderDepth(ivec2(x, y + 1), level) : pz;
             if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w0.x, p.x, p.z, zl));
             if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w1.x, p.x, p.z, zr));
             if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w0.y, p.y, p.z, zd));
@@ -94,6 +137,6 @@ float backproject(vec3 p, float pz, vec4 area, int level, out int count) {
 #if BITMASK
     return maskVisibility(m0, m1);
 #else
-    return 1.0 - min(occluded, 1.0);
+    return horizonArea(horizon.x, horizon.y, horizon.z) * (1.0 - min(occluded, 1.0));
 #endif
 }

@@ -35,8 +35,8 @@ void main() {
     int budget = budgetAt(gl_FragCoord.xy);
     o_area = vec4(0.0);
     o_loq = vec4(-1.0, float(CLASS_LIT), float(budget), 0.0);
-    vec3 p;
-    if (!receiverAt(pix, p)) return;
+    vec3 p, horizon;
+    if (!receiverAt(pix, 0, p, horizon)) return;
     float pz = biasedDepth(p);
     float z = u_near;
     if (pz <= z) return;

@@ -2,7 +2,7 @@
 // at their HSM depths, form a quad; projected from the receiver onto the light it is two
 // triangles whose masks are ANDs of three edge-table entries (the samples left of each edge).
 // A quad counts when all four corners lie in front of the receiver. Needs search.glsl and
-// backproject.glsl's onLight() and maskVisibility().
+// backproject.glsl's onLight(), maskVisibility() and addBelowHorizon().
 layout(binding = 11) uniform usampler2D u_edges;  // (offset bin, 2 * angle bin + word half)
 uniform int u_edge_angles;
 uniform int u_edge_offsets;
@@ -41,11 +41,13 @@ void addTriangle(vec2 a, vec2 b, vec2 c, inout uvec4 m0, inout uvec4 m1) {
     m1 |= h0 & h1 & h2;
 }
 
-// Back-projects the microquads of LEVEL whose first corner lies in AREA; returns visibility.
-float backprojectQuads(vec3 p, float pz, vec4 area, int level, out int count) {
+// Back-projects the microquads of LEVEL whose first corner lies in AREA for receiver P
+// (tangent plane HORIZON); returns visibility.
+float backprojectQuads(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
     ivec4 r = levelRange(area, level, 2);
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
     uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
+    addBelowHorizon(horizon, m0, m1);
     count = 0;
     for (int y = r.y; y <= r.w; ++y)
         for (int x = r.x; x <= r.z; ++x) {

@@ -9,7 +9,7 @@
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2D u_normal;
 layout(binding = 2) uniform isampler2D u_id;
-layout(binding = 3) uniform sampler2D u_receives;  // 1 per object id that receives shadows
+layout(binding = 3) uniform sampler2D u_receives;  // per object id: (receives, casts), 0 or 1
 layout(binding = 4) uniform sampler2D u_hsm;       // (min, max) distance, mip pyramid
 #if ACCEL != 0
 layout(binding = 5) uniform sampler2DArray u_mssm;  // layer k: 2^k x 2^k neighbourhoods
@@ -30,20 +30,43 @@ uniform float u_normal_offset; // receiver offset along its normal, in texels at
 uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - bias) * p.z
 
 // The receiver at pixel PIX in the light's frame (x right, y up, z forward), offset along its
-// normal; false where the pixel has no receiving geometry or lies behind the light.
-bool receiverAt(ivec2 pix, out vec3 p) {
+// normal by u_normal_offset level-0 texels and, for a receiver that also casts, by up to
+// 2^LEVEL - 1 more as its surface's slope from the light needs (a level-l micropatch of its own
+// surface holds the nearest depth of 2^l x 2^l texels, so it lies up to that much nearer the
+// light: a level-0 offset left coarse levels shadowing their own surface in bands); false
+// where the pixel has no receiving geometry or lies behind the light. HORIZON is its tangent
+// plane seen from the light: the height of light point (u, v) (the light as the unit square,
+// u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only a receiver
+// that casts hides the light below its plane (as its far side does for `exact`); others get
+// the plane 1 (all above).
+bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     p = vec3(0.0);
+    horizon = vec3(1.0, 0.0, 0.0);
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) return false;
     int id = texelFetch(u_id, pix, 0).r;
-    if (id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) return false;
+    vec2 role = id < 0 ? vec2(0.0) : texelFetch(u_receives, ivec2(id, 0), 0).rg;
+    if (role.x < 0.5) return false;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
     vec3 d = pos.xyz - u_light_centre;
     float z = dot(d, u_light_forward);
     if (z <= 0.0) return false;
-    d += n * (u_normal_offset * max(u_texel.x, u_texel.y) * z);
+    vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
+    vec2 e = 2.0 * u_light_half * nl.xy;
+    if (role.y > 0.5) horizon = vec3(-dot(d, n) - 0.5 * (e.x + e.y), e);
+    // The surface's depth step per lateral step, sin / cos^2 of the angle between its normal and
+    // the direction to the light's centre, is what the offset along the normal must make up.
+    float c = clamp(-dot(n, normalize(d)), 0.05, 1.0);
+    float slope = min(sqrt(1.0 - c * c) / (c * c), 1.0);
+    float offset = u_normal_offset + (role.y > 0.5 ? float((1 << level) - 1) * slope : 0.0);
+    d += n * (offset * max(u_texel.x, u_texel.y) * z);
     p = vec3(dot(d, u_light_right), dot(d, u_light_up), dot(d, u_light_forward));
     return p.z > 0.0;
+}
+
+// Whether part of the light lies below the receiver's tangent plane HORIZON (receiverAt()).
+bool crossesHorizon(vec3 horizon) {
+    return horizon.x + min(horizon.y, 0.0) + min(horizon.z, 0.0) < 0.0;
 }
 
 // The distance below which a micro-occluder shadows P.
@@ -65,11 +88,19 @@ bool areaInsideMap(vec4 a) {
     return a.x >= 0.0 && a.y >= 0.0 && a.z < float(u_map_size) && a.w < float(u_map_size);
 }
 
+// The b_mo of an "unlimited" budget (0): level 0 up to 64 texels per axis, coarser levels where
+// the search area is wider, so that no pixel back-projects more than 65 x 65 micro-occluders
+// (the multi-resolution bound of section 3). A level-l micropatch at the nearest occluder's
+// depth then back-projects onto at most 1/64 of the light's width, a quarter of the spacing
+// of 16 x 16 light samples. (llvmpipe also ends a shader's loops after 65535 iterations in all:
+// an unbounded area lost every row past the first 64 thousand texels, a straight seam.)
+const int kUnlimitedBudget = 65;
+
 // The fractional level at which an area of EXTENT level-0 texels spans at most BUDGET texels
-// per axis (extent / 2^l <= budget - 1); 0 for an unlimited budget (BUDGET <= 0).
+// per axis (extent / 2^l <= budget - 1); BUDGET <= 0 is kUnlimitedBudget.
 float budgetLevel(float extent, int budget) {
-    if (budget <= 0) return 0.0;
-    return clamp(log2(max(extent, 1e-6) / float(budget - 1)), 0.0, float(u_levels - 1));
+    float b = float(budget <= 0 ? kUnlimitedBudget : budget);
+    return clamp(log2(max(extent, 1e-6) / (b - 1.0)), 0.0, float(u_levels - 1));
 }
 
 float areaExtent(vec4 a) {

@@ -1,8 +1,9 @@
 #version 450 core
 // `bitmask` pass 3 (Schwarz & Stamminger, Fig. 3 step 3): visibility of each pixel from its
-// class, search area and (smoothed) level: lit 1, umbra 0, penumbra by back-projection at the
-// level, or at floor and ceiling blended by the fraction (BLEND 1). Diagnostics: level, budget,
-// micro-occluders back-projected, class; Table 2 statistics summed in the Stats buffer.
+// class, search area and (smoothed) level: lit 1 less the light below the receiver's tangent
+// plane, umbra 0, penumbra by back-projection at the level, or at floor and ceiling blended by
+// the fraction (BLEND 1). Diagnostics: level, budget, micro-occluders back-projected, class;
+// Table 2 statistics summed in the Stats buffer.
 #include "techniques/bitmask/search.glsl"
 #include "techniques/bitmask/backproject.glsl"
 
@@ -21,6 +22,13 @@ layout(location = 2) out vec4 o_budget;
 layout(location = 3) out vec4 o_occluders;
 layout(location = 4) out vec4 o_class;
 
+// Back-projection at LEVEL for the receiver at PIX offset by the level's texels.
+float visibilityAt(ivec2 pix, vec4 area, int level, out int count) {
+    vec3 p, horizon;
+    receiverAt(pix, level, p, horizon);
+    return backproject(p, horizon, biasedDepth(p), area, level, count);
+}
+
 void main() {
     ivec2 pix = ivec2(gl_FragCoord.xy);
     vec4 loq = texelFetch(u_loq, pix, 0);
@@ -31,24 +39,27 @@ void main() {
     o_occluders = vec4(0.0);
     o_class = vec4(float(cls), 0.0, 0.0, 0.0);
     if (cls == CLASS_UMBRA) atomicAdd(s_umbra, 1u);
-    vec3 p;
-    if (cls != CLASS_PENUMBRA || !receiverAt(pix, p)) return;
-    float pz = biasedDepth(p);
+    vec3 p, horizon;
+    if (cls == CLASS_UMBRA || !receiverAt(pix, 0, p, horizon)) return;
+    if (cls == CLASS_LIT) {
+        o_visibility.x = litVisibility(horizon);
+        return;
+    }
     vec4 area = texelFetch(u_area, pix, 0);
     float level = loq.x;
     int count = 0;
 #if BLEND
     int lo = int(floor(level));
     float alpha = level - float(lo);
-    float v = backproject(p, pz, area, lo, count);
+    float v = visibilityAt(pix, area, lo, count);
     if (alpha > 1e-3) {
         int more = 0;
-        v = mix(v, backproject(p, pz, area, min(lo + 1, u_levels - 1), more), alpha);
+        v = mix(v, visibilityAt(pix, area, min(lo + 1, u_levels - 1), more), alpha);
         count += more;
     }
 #else
     level = ceil(level - 1e-4);
-    float v = backproject(p, pz, area, int(level), count);
+    float v = visibilityAt(pix, area, int(level), count);
 #endif
     o_visibility.x = v;
     o_level.x = level;

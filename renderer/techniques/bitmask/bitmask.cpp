@@ -34,21 +34,22 @@ constexpr std::array kBitmaskParams = {
     enumParam("accel", "ysm", "hsm|mssm|ysm",
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
     intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
-    enumParam("occluders", "micropatch", "micropatch|microquad|microrect",
-              "micro-occluders: texels, quads between texel centres (bitmask only), or "
-              "microrects merged per level (5.2)"),
+    enumParam("occluders", "microrect", "micropatch|microquad|microrect",
+              "micro-occluders: microrects merged per level (5.2), texels, or quads between "
+              "texel centres (bitmask only)"),
     enumParam("visibility", "bitmask", "bitmask|area",
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
     enumParam("pattern", "jittered", "regular|jittered|random", "light sample pattern"),
     intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
     boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)"),
-    intParam("budget", 12, 0, 256,
+    intParam("budget", 12, 0, 64,
              "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
-             "unlimited, else >= 2); blending also back-projects the finer floor level"),
+             "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
+             "also back-projects the finer floor level"),
     boolParam("budget_falloff", false,
               "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners"),
-    intParam("budget_edge", 5, 2, 256,
+    intParam("budget_edge", 5, 2, 64,
              "b_mo at the image corners with budget_falloff, where budget_map is 0"),
     stringParam("budget_map", "",
                 "budget map image (.png or .exr, relative to the scene file): its first channel "
@@ -125,20 +126,23 @@ public:
     }
 
     void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override {
-        std::vector<std::uint8_t> receives;
+        // Per object id: (receives, casts), 255 for yes.
+        std::vector<std::uint8_t> roles;
         for (const auto& o : scene.objects()) {
-            receives.resize(std::max(receives.size(), static_cast<size_t>(o.id) + 1), 0);
-            receives[static_cast<size_t>(o.id)] = scene::receivesShadow(o.shadow) ? 255 : 0;
+            const auto i = 2 * static_cast<size_t>(o.id);
+            roles.resize(std::max(roles.size(), i + 2), 0);
+            roles[i] = scene::receivesShadow(o.shadow) ? 255 : 0;
+            roles[i + 1] = scene::castsShadow(o.shadow) ? 255 : 0;
         }
-        if (receives.empty()) receives.push_back(0);
-        receives_ = gl::createTexture2D(GL_R8, static_cast<int>(receives.size()), 1,
-                                        "bitmask receiving objects");
-        glTextureSubImage2D(receives_.id(), 0, 0, 0, static_cast<int>(receives.size()), 1, GL_RED,
-                            GL_UNSIGNED_BYTE, receives.data());
+        if (roles.empty()) roles = {0, 0};
+        const int ids = static_cast<int>(roles.size() / 2);
+        receives_ = gl::createTexture2D(GL_RG8, ids, 1, "bitmask object roles");
+        glTextureSubImage2D(receives_.id(), 0, 0, 0, ids, 1, GL_RG, GL_UNSIGNED_BYTE, roles.data());
         ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
         if (use_bitmask_) {
             const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
             masks_ = bitmask::halfPlaneTexture(points);
+            samples_ = bitmask::pointTexture(points);
             if (microquads_) edges_ = bitmask::edgeTexture(points);
         }
         if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
@@ -263,6 +267,7 @@ private:
         bindSearch(ctx, p, light, window);
         if (use_bitmask_) {
             glBindTextureUnit(6, masks_.id());
+            glBindTextureUnit(13, samples_.id());
             gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
             gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
         }
@@ -329,7 +334,7 @@ private:
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<bitmask::LoqTargets> targets_;
     std::unique_ptr<bitmask::MicroRects> rects_;
-    gl::Texture receives_, masks_, edges_, budget_texture_;
+    gl::Texture receives_, masks_, samples_, edges_, budget_texture_;
     gl::Program classify_, smooth_program_, visibility_;
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;

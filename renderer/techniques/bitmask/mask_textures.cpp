@@ -33,6 +33,13 @@ gl::Texture halfPlaneTexture(const std::vector<glm::vec2>& points) {
     return maskTexture(tables.x, kTableResolution + 1, "bitmask half-plane masks");
 }
 
+gl::Texture pointTexture(const std::vector<glm::vec2>& points) {
+    const int n = static_cast<int>(points.size());
+    gl::Texture t = gl::createTexture2D(GL_RG32F, n, 1, "bitmask sample points");
+    glTextureSubImage2D(t.id(), 0, 0, 0, n, 1, GL_RG, GL_FLOAT, points.data());
+    return t;
+}
+
 gl::Texture edgeTexture(const std::vector<glm::vec2>& points) {
     return maskTexture(edgeTable(points), kEdgeOffsets, "bitmask edge masks");
 }
