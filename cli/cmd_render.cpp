@@ -5,8 +5,8 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/render/render_job.h"
 
 namespace penumbra::cli {
 namespace {
@@ -74,7 +74,7 @@ std::string pattern(const ArgCursor& c, const char* flag, const std::string& v) 
 }
 
 // Consumes one render option at the cursor into REQ; false if the argument is not one.
-bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
+bool parseRenderOption(ArgCursor& c, app::RenderRequest& req) {
     std::optional<std::string> v;
     if ((v = c.option("-t", "--technique"))) {
         req.technique = *v;
@@ -117,7 +117,7 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
 
 int runRender(const Args& args) {
     ArgCursor c("render", args);
-    render::RenderRequest req;
+    app::RenderRequest req;
     std::optional<std::string> scene, frame_env;
     std::optional<int> frame_offset;
     while (!c.done()) {
@@ -152,7 +152,7 @@ int runRender(const Args& args) {
         req.farm_task = true;
     }
     req.scene = *scene;
-    return render::runRenderJob(req);
+    return app::runRenderJob(req);
 }
 
 }  // namespace penumbra::cli

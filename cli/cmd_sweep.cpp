@@ -3,8 +3,8 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "renderer/app/sweep_job.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/render/sweep_job.h"
 
 namespace penumbra::cli {
 namespace {
@@ -52,7 +52,7 @@ scene::Override keyValue(const ArgCursor& c, const char* flag, const std::string
 
 int runSweep(const Args& args) {
     ArgCursor c("sweep", args);
-    render::SweepRequest req;
+    app::SweepRequest req;
     req.reference_sets.push_back({"technique.samples", "32"});
     std::optional<std::string> scene, out;
     while (!c.done()) {
@@ -114,7 +114,7 @@ int runSweep(const Args& args) {
         if (args[i].rfind("--jobs=", 0) == 0) continue;
         req.job_args.push_back(args[i]);
     }
-    return render::runSweepJob(req);
+    return app::runSweepJob(req);
 }
 
 }  // namespace penumbra::cli

@@ -10,7 +10,7 @@
 
 #include "gl_test_env.h"
 #include "renderer/core/params.h"
-#include "renderer/render/frame_renderer.h"
+#include "renderer/frame/frame_renderer.h"
 #include "renderer/techniques/technique.h"
 
 using penumbra::testing::channel;
@@ -37,8 +37,8 @@ Result render(const std::string& name, const std::string& technique,
     const auto* t = techniques::findTechnique(s.technique.value("name", "hard"));
     EXPECT_NE(t, nullptr);
     Params params = resolveParams(t->params, s.technique, name + ": technique");
-    render::FrameRenderer renderer(info, s, *t, params);
-    render::PassTimer timer(info.software);
+    frame::FrameRenderer renderer(info, s, *t, params);
+    gl::PassTimer timer(info.software);
     Result r;
     r.stats = renderer.render(s, timer);
     timer.finishFrame();

@@ -9,7 +9,7 @@
 
 #include "gl_test_env.h"
 #include "renderer/core/params.h"
-#include "renderer/render/frame_renderer.h"
+#include "renderer/frame/frame_renderer.h"
 #include "renderer/techniques/technique.h"
 
 using penumbra::testing::channel;
@@ -28,9 +28,9 @@ Render render(const std::string& technique) {
         {{"technique", technique}});
     scene::Scene s = source.at(0);
     const auto* t = techniques::findTechnique(s.technique.value("name", ""));
-    render::FrameRenderer renderer(penumbra::testing::glInfo(), s, *t,
-                                   resolveParams(t->params, s.technique, "technique"));
-    render::PassTimer timer(penumbra::testing::glInfo().software);
+    frame::FrameRenderer renderer(penumbra::testing::glInfo(), s, *t,
+                                  resolveParams(t->params, s.technique, "technique"));
+    gl::PassTimer timer(penumbra::testing::glInfo().software);
     Render r;
     r.stats = renderer.render(s, timer);
     timer.finishFrame();

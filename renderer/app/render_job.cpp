@@ -1,5 +1,5 @@
 // The render job: see render_job.h.
-#include "renderer/render/render_job.h"
+#include "renderer/app/render_job.h"
 
 #include <unistd.h>
 
@@ -10,22 +10,22 @@
 #include <map>
 
 #include "penumbra/version.h"
+#include "renderer/app/memory_budget.h"
+#include "renderer/app/render_job_outputs.h"
+#include "renderer/app/render_job_plan.h"
+#include "renderer/app/render_job_progress.h"
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/frame/camera_attributes.h"
+#include "renderer/frame/frame_renderer.h"
 #include "renderer/gl/debug.h"
 #include "renderer/output/cryptomatte.h"
 #include "renderer/output/timing.h"
-#include "renderer/render/camera_attributes.h"
-#include "renderer/render/frame_renderer.h"
-#include "renderer/render/render_job_outputs.h"
-#include "renderer/render/render_job_plan.h"
-#include "renderer/render/render_job_progress.h"
 #include "renderer/scene/overrides.h"
-#include "renderer/render/memory_budget.h"
 #include "renderer/techniques/technique.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -73,11 +73,13 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
 // A glTF model given where a scene belongs gets a hint instead of a JSON parse error.
 void refuseModelAsScene(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext == ".gltf" || ext == ".glb")
-        throw InputError(file.string() + ": a glTF model, not a scene: name it in a scene's objects "
-                         "({\"gltf\": \"" + file.filename().string() +
-                         "\"}, see docs/scene-format.md)");
+        throw InputError(file.string() +
+                         ": a glTF model, not a scene: name it in a scene's objects "
+                         "({\"gltf\": \"" +
+                         file.filename().string() + "\"}, see docs/scene-format.md)");
 }
 
 }  // namespace
@@ -131,8 +133,8 @@ int runRenderJob(const RenderRequest& req) {
 
     // 3. Per-run GPU resources.
     const int width = first.image.width, height = first.image.height;
-    FrameRenderer renderer(glinfo, first, info, params);
-    PassTimer timer(glinfo.software);
+    frame::FrameRenderer renderer(glinfo, first, info, params);
+    gl::PassTimer timer(glinfo.software);
 
     const nlohmann::json backend = {{"api", glinfo.api},         {"device", glinfo.device},
                                     {"vendor", glinfo.vendor},   {"renderer", glinfo.renderer},
@@ -185,10 +187,11 @@ int runRenderJob(const RenderRequest& req) {
                                 {"penumbra/gl_vendor", glinfo.vendor},
                                 {"penumbra/gl_renderer", glinfo.renderer},
                                 {"penumbra/gl_version", glinfo.version}};
-            // Numbers as EXR int attributes (they were strings until this change; README changelog).
+            // Numbers as EXR int attributes (they were strings until this change; README
+            // changelog).
             image.int_attributes = {{"penumbra/frame", plan.frame},
                                     {"penumbra/samples", renderer.samples()}};
-            addCameraAttributes(image, s.camera, image.width, image.height);
+            frame::addCameraAttributes(image, s.camera, image.width, image.height);
             std::vector<std::string> names;
             for (const auto& object : s.objects) names.push_back(object.name);
             output::addCryptomatte(image, "CryptoObject", names, renderer.samples());
@@ -222,4 +225,4 @@ int runRenderJob(const RenderRequest& req) {
     return failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

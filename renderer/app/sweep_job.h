@@ -12,7 +12,7 @@
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene_source.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct SweepRequest {
     std::filesystem::path scene;
@@ -39,4 +39,4 @@ struct SweepRequest {
 // rendering) and BackendError.
 int runSweepJob(const SweepRequest& request);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -11,7 +11,7 @@
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene_source.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct RenderRequest {
     std::filesystem::path scene;
@@ -39,4 +39,4 @@ std::string unknownTechniqueMessage(const std::string& name);
 // input, before anything is written) and BackendError (no context).
 int runRenderJob(const RenderRequest& request);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -1,7 +1,7 @@
 // The sweep job: see sweep_job.h.
-#include "renderer/render/sweep_job.h"
+#include "renderer/app/sweep_job.h"
 
-#include "renderer/render/memory_budget.h"
+#include "renderer/app/memory_budget.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -21,16 +21,17 @@
 #include "renderer/core/content_hash.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/frame/frame_renderer.h"
 #include "renderer/gl/debug.h"
 #include "renderer/output/compare.h"
 #include "renderer/output/exr.h"
 #include "renderer/output/heatmap.h"
 #include "renderer/output/preview.h"
 #include "renderer/output/timing.h"
-#include "renderer/render/frame_renderer.h"
 #include "renderer/scene/json_file.h"
+#include "renderer/techniques/technique.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,7 +67,7 @@ void validate(Job& job, const SweepRequest& req) {
                       resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
                       nullptr);
     job.hash = contentHash(source.document().dump() + "|frame " + std::to_string(req.frame) + "|" +
-                     PENUMBRA_VERSION);
+                           PENUMBRA_VERSION);
 }
 
 struct Rendered {
@@ -83,8 +84,9 @@ Rendered renderJob(const Job& job, const SweepRequest& req, const gl::ContextInf
     auto source = scene::SceneSource::load(req.scene, job.overrides, options);
     scene::Scene s = source.at(req.frame);
     const auto& info = *techniques::findTechnique(job.technique_name);
-    FrameRenderer renderer(gl, s, info, resolveParams(info.params, s.technique, "technique"));
-    PassTimer timer(gl.software);
+    frame::FrameRenderer renderer(gl, s, info,
+                                  resolveParams(info.params, s.technique, "technique"));
+    gl::PassTimer timer(gl.software);
     std::map<std::string, std::vector<double>> grouped;
     std::vector<double> totals;
     Rendered out;
@@ -406,4 +408,4 @@ int runSweepJob(const SweepRequest& req) {
     return failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app
