@@ -1,7 +1,7 @@
 // Renders frames of one scene with one technique on the current GL context: the G-buffer (and
 // with image.samples > 1 the sample G-buffer), the technique once per light, the shade pass;
 // and reads the result back as an Image.
-// Used by the render job and by the GL tests.
+// Driven by renderFrame (render_frame.h), the one render sequence.
 #pragma once
 
 #include <memory>
@@ -45,6 +45,7 @@ public:
     // Lights rendered per frame: the scene's and those made of its environment.
     int lightCount() const { return lights_; }
     const Params& params() const { return params_; }
+    const TechniqueInfo& technique() const { return info_; }
 
 private:
     const gl::ContextInfo& gl_;

@@ -36,22 +36,16 @@ namespace {
 output::Image render(const std::string& name, const std::vector<scene::Override>& overrides,
                      int frame, nlohmann::json* stats,
                      const std::function<void(frame::FrameRenderer&)>& configure) {
-    const gl::ContextInfo& info = glInfo();
     auto source = scene::SceneSource::load(
         std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
     scene::Scene s = source.at(frame);
     const auto* technique = techniques::findTechnique(s.technique.value("name", "hard"));
     if (!technique) throw std::runtime_error("unknown technique in " + name);
     Params params = resolveParams(technique->params, s.technique, name + ": technique");
-    frame::FrameRenderer renderer(info, s, *technique, params);
-    if (configure) configure(renderer);
-    gl::PassTimer timer(info.software);
-    nlohmann::json technique_stats = renderer.render(s, timer);
-    timer.finishFrame();
-    if (stats) *stats = technique_stats;
-    output::Image image = renderer.readImage();
-    gl::checkErrors(name);  // no GL error after any render
-    return image;
+    // renderFrame checks that no GL error was raised by the render.
+    frame::RenderedFrame r = frame::renderFrame(glInfo(), s, *technique, params, {}, configure);
+    if (stats) *stats = std::move(r.stats);
+    return std::move(r.image);
 }
 }  // namespace
 

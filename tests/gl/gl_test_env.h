@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/frame/frame_renderer.h"
+#include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
 #include "renderer/output/image.h"
 #include "renderer/scene/scene_source.h"
