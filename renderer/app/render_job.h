@@ -32,7 +32,7 @@ struct RenderRequest {
     bool quiet = false;
 };
 
-// "unknown technique 'NAME' (did you mean 'X'? known: a, b, ...)".
+// "unknown technique 'NAME' (did you mean 'X'? known: a, b, ...)" (render_job_checks.cpp).
 std::string unknownTechniqueMessage(const std::string& name);
 
 // Returns the exit code (0, or 1 when a frame failed at run time). Throws InputError (bad
