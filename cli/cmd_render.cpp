@@ -5,6 +5,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "cli/run_flags.h"
 #include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
 
@@ -38,8 +39,9 @@ options:
       --skip-existing    skip frames whose files (EXR, JSON, preview) all exist already
       --strict           a frame outside the scene's animation range is an error, not a
                          warning
-      --warmup N         render each frame N extra times first, untimed
-      --repeat N         time N renders per frame; the JSON gets min/median/max per pass
+      --warmup N         render each frame N extra times first, untimed (0 to 100)
+      --repeat N         time N renders per frame (1 to 100); the JSON gets min/median/max
+                         per pass
       --quiet            no progress or messages except errors
       --gl-debug         print every KHR_debug message
       --memory-limit SIZE  refuse a render whose buffers would need more (8G, 512M;
@@ -93,14 +95,7 @@ bool parseRenderOption(ArgCursor& c, app::RenderRequest& req) {
         req.frames = *v;
     } else if (c.flag("", "--list-frames")) {
         req.list_frames = true;
-    } else if ((v = c.option("", "--size"))) {
-        auto [w, h] = parseSize(c, "--size", *v);
-        req.overrides.push_back({"image.width", std::to_string(w)});
-        req.overrides.push_back({"image.height", std::to_string(h)});
-    } else if ((v = c.option("", "--warmup"))) {
-        req.warmup = parseInt(c, "--warmup", *v, 0, 1000);
-    } else if ((v = c.option("", "--repeat"))) {
-        req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
+    } else if (parseRunFlag(c, req.overrides, req.runs)) {
     } else if (c.flag("", "--skip-existing")) {
         req.skip_existing = true;
     } else if (c.flag("", "--strict")) {

@@ -114,8 +114,8 @@ void addJobAttributes(output::Image& image, const JobFrames& job, const scene::S
 void renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
     const RenderRequest& req = job.req;
     scene::Scene s = job.in.source.at(plan.frame);
-    frame::RenderedFrame r = frame::renderFrame(job.renderer, s, resolveFor(job.in.info, s),
-                                                job.timer, {req.warmup, req.repeat});
+    frame::RenderedFrame r =
+        frame::renderFrame(job.renderer, s, resolveFor(job.in.info, s), job.timer, req.runs);
     addJobAttributes(r.image, job, s, plan.frame);
     output::FrameReport report = timingReport(r, job.timer.clockName());
     report.scene = job.scene_name;
@@ -126,7 +126,7 @@ void renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
     report.width = job.in.first.image.width;
     report.height = job.in.first.image.height;
     report.samples = job.renderer.samples();
-    report.warmup = req.warmup;
+    report.warmup = req.runs.warmup;
     report.stats = r.stats;
     report.stats["triangles"] = job.renderer.gpuScene().triangleCount();
     report.stats["lights"] = job.renderer.lightCount();

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene_source.h"
 
@@ -27,8 +28,7 @@ struct RenderRequest {
     gl::ContextRequest gl;
     bool skip_existing = false;
     bool list_frames = false;  // print the frames to render (stdout) and stop: no GL
-    int warmup = 0;
-    int repeat = 1;
+    frame::FrameRuns runs;     // --warmup, --repeat
     bool quiet = false;
 };
 

@@ -58,16 +58,15 @@ struct Rendered {
     json stats;
 };
 
-Rendered render(const SweepRender& job, Sweep& sweep, int warmup, int repeat) {
+Rendered render(const SweepRender& job, Sweep& sweep, frame::FrameRuns runs) {
     const SweepRequest& req = sweep.req;
     scene::LoadOptions options;
     options.technique = job.technique;
     auto source = scene::SceneSource::load(req.scene, job.overrides, options);
     scene::Scene s = source.at(req.frame);
     const auto& info = *techniques::findTechnique(job.technique_name);
-    frame::RenderedFrame frame =
-        frame::renderFrame(sweep.gl(), s, info,
-                           resolveParams(info.params, s.technique, "technique"), {warmup, repeat});
+    frame::RenderedFrame frame = frame::renderFrame(
+        sweep.gl(), s, info, resolveParams(info.params, s.technique, "technique"), runs);
     std::map<std::string, std::vector<double>> grouped;
     std::vector<double> totals;
     static const std::regex suffix(R"((\[\d+\])?(@\d+)?$)");
@@ -125,7 +124,7 @@ void renderReferences(Sweep& sweep) {
         if (sweep.progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());
-        output::writeExr(path, render(references[i], sweep, 0, 1).image);
+        output::writeExr(path, render(references[i], sweep, {0, 1}).image);
         ++sweep.rendered_refs;
     }
 }
@@ -153,7 +152,7 @@ json renderRun(Sweep& sweep, size_t i, const std::string& id, const json& values
     output::CompareOptions compare;
     compare.channels = {"visibility"};
     compare.fail = 0.05;  // fail_fraction: share of pixels whose visibility is off by > 0.05
-    Rendered r = render(run, sweep, req.warmup, req.repeat);
+    Rendered r = render(run, sweep, req.runs);
     const std::string base = "runs/" + id;
     output::writeExr(req.out / (base + ".exr"), r.image);
     output::writePngPreview(req.out / (base + ".png"), r.image);
