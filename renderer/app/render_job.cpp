@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 
 #include "renderer/app/memory_budget.h"
 #include "renderer/app/render_job_checks.h"

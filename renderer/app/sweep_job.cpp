@@ -58,6 +58,8 @@ struct Rendered {
     json stats;
 };
 
+// Renders JOB RUNS times; its passes grouped by name without [batch] and @light, medians of the
+// timed runs.
 Rendered render(const SweepRender& job, Sweep& sweep, frame::FrameRuns runs) {
     const SweepRequest& req = sweep.req;
     scene::LoadOptions options;
