@@ -5,8 +5,9 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "cli/run_flags.h"
+#include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/render/render_job.h"
 
 namespace penumbra::cli {
 namespace {
@@ -38,8 +39,9 @@ options:
       --skip-existing    skip frames whose files (EXR, JSON, preview) all exist already
       --strict           a frame outside the scene's animation range is an error, not a
                          warning
-      --warmup N         render each frame N extra times first, untimed
-      --repeat N         time N renders per frame; the JSON gets min/median/max per pass
+      --warmup N         render each frame N extra times first, untimed (0 to 100)
+      --repeat N         time N renders per frame (1 to 100); the JSON gets min/median/max
+                         per pass
       --quiet            no progress or messages except errors
       --gl-debug         print every KHR_debug message
       --memory-limit SIZE  refuse a render whose buffers would need more (8G, 512M;
@@ -74,7 +76,7 @@ std::string pattern(const ArgCursor& c, const char* flag, const std::string& v) 
 }
 
 // Consumes one render option at the cursor into REQ; false if the argument is not one.
-bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
+bool parseRenderOption(ArgCursor& c, app::RenderRequest& req) {
     std::optional<std::string> v;
     if ((v = c.option("-t", "--technique"))) {
         req.technique = *v;
@@ -93,14 +95,7 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
         req.frames = *v;
     } else if (c.flag("", "--list-frames")) {
         req.list_frames = true;
-    } else if ((v = c.option("", "--size"))) {
-        auto [w, h] = parseSize(c, "--size", *v);
-        req.overrides.push_back({"image.width", std::to_string(w)});
-        req.overrides.push_back({"image.height", std::to_string(h)});
-    } else if ((v = c.option("", "--warmup"))) {
-        req.warmup = parseInt(c, "--warmup", *v, 0, 1000);
-    } else if ((v = c.option("", "--repeat"))) {
-        req.repeat = parseInt(c, "--repeat", *v, 1, 1000);
+    } else if (parseRunFlag(c, req.overrides, req.runs)) {
     } else if (c.flag("", "--skip-existing")) {
         req.skip_existing = true;
     } else if (c.flag("", "--strict")) {
@@ -117,7 +112,7 @@ bool parseRenderOption(ArgCursor& c, render::RenderRequest& req) {
 
 int runRender(const Args& args) {
     ArgCursor c("render", args);
-    render::RenderRequest req;
+    app::RenderRequest req;
     std::optional<std::string> scene, frame_env;
     std::optional<int> frame_offset;
     while (!c.done()) {
@@ -152,7 +147,7 @@ int runRender(const Args& args) {
         req.farm_task = true;
     }
     req.scene = *scene;
-    return render::runRenderJob(req);
+    return app::runRenderJob(req);
 }
 
 }  // namespace penumbra::cli

@@ -3,8 +3,9 @@
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "cli/run_flags.h"
+#include "renderer/app/sweep_job.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/render/sweep_job.h"
 
 namespace penumbra::cli {
 namespace {
@@ -28,7 +29,8 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
   --reference-set K=V      an override for the reference only (default technique.samples=32)
   -f, --frame N            the frame to render (default 0)
   --size WxH               image size
-  --warmup N, --repeat N   timing: untimed renders, then the median of N (default 1, 3)
+  --warmup N, --repeat N   timing: untimed renders, then the median of N (default 1, 3;
+                           at most 100 each)
   -o, --output DIR         where everything goes (required)
   -j, --jobs N             render the runs as N parallel processes through GNU parallel
                            (timings then compete for the machine: compare them with care)
@@ -52,7 +54,7 @@ scene::Override keyValue(const ArgCursor& c, const char* flag, const std::string
 
 int runSweep(const Args& args) {
     ArgCursor c("sweep", args);
-    render::SweepRequest req;
+    app::SweepRequest req;
     req.reference_sets.push_back({"technique.samples", "32"});
     std::optional<std::string> scene, out;
     while (!c.done()) {
@@ -73,14 +75,7 @@ int runSweep(const Args& args) {
             req.reference_sets.push_back(keyValue(c, "--reference-set", *v));
         } else if ((v = c.option("-f", "--frame"))) {
             req.frame = parseInt(c, "--frame", *v, -10'000'000, 10'000'000);
-        } else if ((v = c.option("", "--size"))) {
-            auto [w, h] = parseSize(c, "--size", *v);
-            req.overrides.push_back({"image.width", std::to_string(w)});
-            req.overrides.push_back({"image.height", std::to_string(h)});
-        } else if ((v = c.option("", "--warmup"))) {
-            req.warmup = parseInt(c, "--warmup", *v, 0, 100);
-        } else if ((v = c.option("", "--repeat"))) {
-            req.repeat = parseInt(c, "--repeat", *v, 1, 100);
+        } else if (parseRunFlag(c, req.overrides, req.runs)) {
         } else if ((v = c.option("-o", "--output"))) {
             if (v->empty()) c.fail("--output: empty folder name");
             out = *v;
@@ -114,7 +109,7 @@ int runSweep(const Args& args) {
         if (args[i].rfind("--jobs=", 0) == 0) continue;
         req.job_args.push_back(args[i]);
     }
-    return render::runSweepJob(req);
+    return app::runSweepJob(req);
 }
 
 }  // namespace penumbra::cli

@@ -7,8 +7,8 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
-#include "renderer/render/render_job.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::cli {
@@ -86,7 +86,7 @@ int runTechniques(const Args& args) {
     std::vector<const techniques::TechniqueInfo*> list;
     for (const auto& t : techniques::allTechniques())
         if (!name || t.name == *name) list.push_back(&t);
-    if (list.empty()) c.fail(render::unknownTechniqueMessage(*name));
+    if (list.empty()) c.fail(app::unknownTechniqueMessage(*name));
     if (json) {
         nlohmann::json out = nlohmann::json::array();
         for (const auto* t : list) {

@@ -23,7 +23,7 @@ public:
     void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {
         sampler_.prepare(gl, settings_);
     }
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const LightSample centre{{0.5f, 0.5f}, 1.0f};
         int maps = sampler_.render(ctx, std::span(&centre, 1));
         ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + maps;

@@ -21,7 +21,7 @@ void LightSampler::prepare(const gl::ContextInfo& gl, const SamplingSettings& se
     accumulate_ = std::make_unique<passes::ShadowAccumulate>();
 }
 
-int LightSampler::render(render::FrameContext& ctx, std::span<const LightSample> samples) {
+int LightSampler::render(frame::FrameContext& ctx, std::span<const LightSample> samples) {
     const scene::RectLight& light = ctx.currentLight();
     const auto corners = light.corners();
     views_.clear();

@@ -10,9 +10,9 @@
 #include <glm/glm.hpp>
 
 #include "renderer/core/params.h"
+#include "renderer/frame/frame_context.h"
 #include "renderer/gl/context.h"
 #include "renderer/passes/shadow_maps.h"
-#include "renderer/render/frame_context.h"
 
 namespace penumbra::techniques {
 
@@ -33,7 +33,7 @@ public:
     void prepare(const gl::ContextInfo& gl, const SamplingSettings& settings);
     // Renders VISIBILITY = sum_k w_k lit_k for SAMPLES of ctx's light into ctx's output, one
     // "shadow_maps[b]" and one "shadow_test[b]" pass per batch. Returns maps rendered.
-    int render(render::FrameContext& ctx, std::span<const LightSample> samples);
+    int render(frame::FrameContext& ctx, std::span<const LightSample> samples);
 
 private:
     SamplingSettings settings_;

@@ -45,7 +45,7 @@ public:
     void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {
         sampler_.prepare(gl, settings_);
     }
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         // A light sampled from the environment is one direction: one map at its centre.
         const LightSample centre{{0.5f, 0.5f}, 1.0f};
         int maps = ctx.environmentLight() ? sampler_.render(ctx, std::span(&centre, 1))

@@ -1,57 +1,18 @@
-// The technique interface: a parameter table and a renderer of visibility. A technique never
-// times itself, parses JSON or writes files; the frame loop does that around it.
+// The technique registry, and the frame layer's technique interface (renderer/frame/
+// technique.h) under the names the techniques use: every technique includes this header.
 #pragma once
 
-#include <memory>
 #include <span>
-#include <string>
 #include <string_view>
-#include <vector>
 
-#include "renderer/core/params.h"
-#include "renderer/gl/context.h"
-#include "renderer/passes/gpu_scene.h"
-#include "renderer/render/frame_context.h"
+#include "renderer/frame/technique.h"
 
 namespace penumbra::techniques {
 
-// A per-pixel diagnostic written to colour 1+i of the output; lights combine by Sum or Max.
-struct DiagnosticChannel {
-    std::string name;  // written as "<technique>.<name>"
-    enum class Combine { Sum, Max } combine = Combine::Max;
-};
-
-class Technique {
-public:
-    virtual ~Technique() = default;
-    // Reads the files its parameters name (relative to SCENE's file), once before prepare().
-    // Throws InputError naming the parameter.
-    virtual void readInputs(const scene::Scene& scene) { (void)scene; }
-    // Per-scene resources (maps, programs), once before the first frame.
-    virtual void prepare(const gl::ContextInfo& gl, const passes::GpuScene& scene) = 0;
-    // Renders visibility (and diagnostics) of ctx.light into ctx.bindOutput()'s targets.
-    virtual void render(render::FrameContext& ctx) = 0;
-    virtual std::vector<DiagnosticChannel> diagnostics() const { return {}; }
-};
-
-// Lights a technique makes of the scene's environment map, rendered after the scene's own; or,
-// with irradiance_layer, one more output layer after them that the technique fills per pixel
-// with the environment's shadowed irradiance (rgb) and unshadowed luminance irradiance (a).
-struct EnvironmentLights {
-    std::vector<scene::RectLight> lights;
-    bool irradiance_layer = false;
-    nlohmann::json stats = nlohmann::json::object();  // e.g. lights fitted, energy captured
-};
-
-struct TechniqueInfo {
-    std::string_view name;
-    std::string_view summary;
-    std::span<const ParamSpec> params;  // the one source of truth for -D, JSON, docs, output
-    std::unique_ptr<Technique> (*create)(const Params&);
-    // The lights of a scene's environment (called only when it has one), or nullptr: the
-    // technique ignores environments.
-    EnvironmentLights (*environment)(const Params&, const scene::Scene&) = nullptr;
-};
+using frame::DiagnosticChannel;
+using frame::EnvironmentLights;
+using frame::Technique;
+using frame::TechniqueInfo;
 
 // Every registered technique, in listing order.
 std::span<const TechniqueInfo> allTechniques();

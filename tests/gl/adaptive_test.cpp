@@ -9,9 +9,6 @@
 #include <vector>
 
 #include "gl_test_env.h"
-#include "renderer/core/params.h"
-#include "renderer/render/frame_renderer.h"
-#include "renderer/techniques/technique.h"
 
 using penumbra::testing::channel;
 using penumbra::testing::shadowRegionMae;
@@ -28,21 +25,9 @@ struct Result {
 // returns visibility, the refinement diagnostic and the statistics.
 Result render(const std::string& name, const std::string& technique,
               std::vector<penumbra::scene::Override> overrides = {}) {
-    using namespace penumbra;
     overrides.push_back({"technique", technique});
-    const auto& info = penumbra::testing::glInfo();
-    auto source = scene::SceneSource::load(
-        std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
-    scene::Scene s = source.at(0);
-    const auto* t = techniques::findTechnique(s.technique.value("name", "hard"));
-    EXPECT_NE(t, nullptr);
-    Params params = resolveParams(t->params, s.technique, name + ": technique");
-    render::FrameRenderer renderer(info, s, *t, params);
-    render::PassTimer timer(info.software);
     Result r;
-    r.stats = renderer.render(s, timer);
-    timer.finishFrame();
-    auto image = renderer.readImage();
+    const auto image = penumbra::testing::renderScene(name, overrides, 0, &r.stats);
     r.visibility = channel(image, "visibility");
     if (image.find("adaptive.depth")) r.depth = channel(image, "adaptive.depth");
     return r;

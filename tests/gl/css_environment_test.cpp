@@ -8,9 +8,6 @@
 #include <string>
 
 #include "gl_test_env.h"
-#include "renderer/core/params.h"
-#include "renderer/render/frame_renderer.h"
-#include "renderer/techniques/technique.h"
 
 using penumbra::testing::channel;
 
@@ -22,19 +19,9 @@ struct Render {
 };
 
 Render render(const std::string& technique) {
-    using namespace penumbra;
-    auto source = scene::SceneSource::load(
-        std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/environment.json",
-        {{"technique", technique}});
-    scene::Scene s = source.at(0);
-    const auto* t = techniques::findTechnique(s.technique.value("name", ""));
-    render::FrameRenderer renderer(penumbra::testing::glInfo(), s, *t,
-                                   resolveParams(t->params, s.technique, "technique"));
-    render::PassTimer timer(penumbra::testing::glInfo().software);
     Render r;
-    r.stats = renderer.render(s, timer);
-    timer.finishFrame();
-    r.image = renderer.readImage();
+    r.image =
+        penumbra::testing::renderScene("environment.json", {{"technique", technique}}, 0, &r.stats);
     return r;
 }
 

@@ -35,23 +35,17 @@ const gl::ContextInfo& glInfo() {
 namespace {
 output::Image render(const std::string& name, const std::vector<scene::Override>& overrides,
                      int frame, nlohmann::json* stats,
-                     const std::function<void(render::FrameRenderer&)>& configure) {
-    const gl::ContextInfo& info = glInfo();
+                     const std::function<void(frame::FrameRenderer&)>& configure) {
     auto source = scene::SceneSource::load(
         std::string(PENUMBRA_SOURCE_DIR) + "/tests/data/gl/" + name, overrides);
     scene::Scene s = source.at(frame);
     const auto* technique = techniques::findTechnique(s.technique.value("name", "hard"));
     if (!technique) throw std::runtime_error("unknown technique in " + name);
     Params params = resolveParams(technique->params, s.technique, name + ": technique");
-    render::FrameRenderer renderer(info, s, *technique, params);
-    if (configure) configure(renderer);
-    render::PassTimer timer(info.software);
-    nlohmann::json technique_stats = renderer.render(s, timer);
-    timer.finishFrame();
-    if (stats) *stats = technique_stats;
-    output::Image image = renderer.readImage();
-    gl::checkErrors(name);  // no GL error after any render
-    return image;
+    // renderFrame checks that no GL error was raised by the render.
+    frame::RenderedFrame r = frame::renderFrame(glInfo(), s, *technique, params, {}, configure);
+    if (stats) *stats = std::move(r.stats);
+    return std::move(r.image);
 }
 }  // namespace
 
@@ -62,7 +56,7 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
 
 output::Image renderSceneWith(const std::string& name,
                               const std::vector<scene::Override>& overrides,
-                              const std::function<void(render::FrameRenderer&)>& configure) {
+                              const std::function<void(frame::FrameRenderer&)>& configure) {
     return render(name, overrides, 0, nullptr, configure);
 }
 

@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
 #include "renderer/output/image.h"
-#include "renderer/render/frame_renderer.h"
 #include "renderer/scene/scene_source.h"
 
 namespace penumbra::testing {
@@ -32,7 +32,7 @@ output::Image renderScene(const std::string& name, const std::vector<scene::Over
 // As renderScene (frame 0), with CONFIGURE applied to the frame renderer before it renders.
 output::Image renderSceneWith(const std::string& name,
                               const std::vector<scene::Override>& overrides,
-                              const std::function<void(render::FrameRenderer&)>& configure);
+                              const std::function<void(frame::FrameRenderer&)>& configure);
 
 // Shadow-region MAE (Atty et al. 5.2.1) of IMG's visibility against the closed form of
 // closed_form.json (a 0.8 m square occluder at (0.2, 1.5, 0.1) parallel to a square light of half

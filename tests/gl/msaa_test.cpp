@@ -211,7 +211,7 @@ TEST(MsaaGL, DepthGuidanceBeatsNearestPixelAtSilhouettes) {
     const std::vector<penumbra::scene::Override> four = {{"image.samples", "4"}};
     const Image guided = renderScene("msaa_silhouette.json", four);
     const Image nearest = penumbra::testing::renderSceneWith(
-        "msaa_silhouette.json", four, [](penumbra::render::FrameRenderer& r) {
+        "msaa_silhouette.json", four, [](penumbra::frame::FrameRenderer& r) {
             r.setSampleGuide(penumbra::passes::SampleGuide::Nearest);
         });
     // Silhouette pixels: plate (id 1) and floor (id 0) both among the 16 sub-pixels.

@@ -130,7 +130,7 @@ public:
         return {{"depth", DiagnosticChannel::Combine::Max}};
     }
 
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const scene::RectLight& light = ctx.currentLight();
         const bool linear = subdivision_ == "linear" ||
                             (subdivision_ == "auto" && light.size.y <= 1e-3f * light.size.x);
@@ -294,7 +294,7 @@ private:
 
     // A perspective view from the light's centre along its axis, covering every caster as
     // seen from there, and every receiver behind them (section 4.1's reprojection target).
-    passes::CameraMatrices lightCentreView(const render::FrameContext& ctx) const {
+    passes::CameraMatrices lightCentreView(const frame::FrameContext& ctx) const {
         const scene::RectLight& light = ctx.currentLight();
         const passes::SampleView v = passes::makeSampleView(
             light, light.position, ctx.gpu.casterBounds(), 1.0f, settings_.map_size);
@@ -309,7 +309,7 @@ private:
     }
 
     // Renders the samples without a map yet into their layers of maps_ (one pass per level).
-    void renderNewMaps(render::FrameContext& ctx, const adaptive::LightQuadtree& tree, int level) {
+    void renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuadtree& tree, int level) {
         const scene::RectLight& light = ctx.currentLight();
         const auto corners = light.corners();
         const int first = static_cast<int>(views_.size());
@@ -359,7 +359,7 @@ private:
     }
 
     // Adds the weighted tests of BATCH's COUNT views from VIEW_BASE to the bound visibility.
-    void addToVisibility(render::FrameContext& ctx, const passes::ShadowMapBatch& batch,
+    void addToVisibility(frame::FrameContext& ctx, const passes::ShadowMapBatch& batch,
                          int view_base, int count) {
         glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glEnable(GL_BLEND);

@@ -166,7 +166,7 @@ public:
                              GL_DYNAMIC_STORAGE_BIT);
     }
 
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const scene::RectLight& light = ctx.currentLight();
         const ssm::LightWindow window = ssm::occluderWindow(light, ctx.gpu.casterBounds());
         const int width = ctx.gbuffer.width(), height = ctx.gbuffer.height();
@@ -197,7 +197,7 @@ public:
 
 private:
     // The uniforms and textures of search.glsl.
-    void bindSearch(const render::FrameContext& ctx, const gl::Program& p,
+    void bindSearch(const frame::FrameContext& ctx, const gl::Program& p,
                     const scene::RectLight& light, const ssm::LightWindow& window) {
         glBindTextureUnit(0, ctx.gbuffer.position().id());
         glBindTextureUnit(1, ctx.gbuffer.normal().id());
@@ -217,7 +217,7 @@ private:
         gl::setUniform(p, "u_depth_bias", depth_bias_);
     }
 
-    void classify(render::FrameContext& ctx, const scene::RectLight& light,
+    void classify(frame::FrameContext& ctx, const scene::RectLight& light,
                   const ssm::LightWindow& window, bool shadowed) {
         targets_->bindClassify();
         const float zero[4] = {0, 0, 0, 0}, none[4] = {-1, 0, float(budget_), 0};
@@ -241,7 +241,7 @@ private:
     }
 
     // The separable bilateral filter: horizontal into the spare LOQ map, vertical back.
-    void smoothLoq(render::FrameContext& ctx) {
+    void smoothLoq(frame::FrameContext& ctx) {
         const auto& p = smooth_program_;
         glUseProgram(p.id());
         gl::setUniform(p, "u_radius", radius_);
@@ -257,7 +257,7 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
-    void visibility(render::FrameContext& ctx, const scene::RectLight& light,
+    void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                     const ssm::LightWindow& window) {
         ctx.bindOutput();
         glDisable(GL_BLEND);
@@ -290,7 +290,7 @@ private:
 
     // Table 2 of the paper: share of pixels that back-project, mean and standard deviation of
     // the micro-occluders each of them back-projects (sums kept over lights).
-    void addStatistics(render::FrameContext& ctx, int width, int height) {
+    void addStatistics(frame::FrameContext& ctx, int width, int height) {
         std::uint32_t s[6] = {0, 0, 0, 0, 0, 0};
         glGetNamedBufferSubData(stats_.id(), 0, sizeof(s), s);
         auto add = [&](const char* key, double v) {

@@ -29,7 +29,7 @@ public:
         programs_ = {};
     }
 
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const scene::RectLight& light = ctx.currentLight();
         const CsmMaps::Filter filter = css::filterFor(settings_, light);
         ensureResources(filter);
@@ -74,7 +74,7 @@ private:
                                         {"SEARCH_STEPS", std::to_string(settings_.search_steps)}});
     }
 
-    void visibility(render::FrameContext& ctx, const scene::RectLight& light,
+    void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                     const ssm::LightWindow& w, const css::DepthRange& range,
                     CsmMaps::Filter filter) {
         ctx.bindOutput();

@@ -50,7 +50,7 @@ public:
 
     void prepare(const gl::ContextInfo&, const passes::GpuScene&) override {}
 
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const int w = ctx.gbuffer.width(), h = ctx.gbuffer.height();
         ctx.pass("exact_setup", [&] {
             rays_.update(ctx.scene);
@@ -101,7 +101,7 @@ private:
     // Runs PIXEL(index, tnear) -> rays cast for every pixel on threads_ threads, rows handed
     // out in chunks; the calling thread also reports progress. Returns the rays cast.
     template <class Pixel>
-    std::uint64_t parallelRows(render::FrameContext& ctx, int h, Clock::time_point start,
+    std::uint64_t parallelRows(frame::FrameContext& ctx, int h, Clock::time_point start,
                                const Pixel& pixel) {
         const int w = ctx.gbuffer.width();
         const float tnear = offset_ * std::max(rays_.extent(), 1e-6f);
@@ -129,7 +129,7 @@ private:
         return rays;
     }
 
-    void reportProgress(render::FrameContext& ctx, int done, int h, std::uint64_t rays,
+    void reportProgress(frame::FrameContext& ctx, int done, int h, std::uint64_t rays,
                         Clock::time_point start) {
         const auto now = Clock::now();
         if (now - last_report_ < std::chrono::milliseconds(250)) return;

@@ -154,7 +154,7 @@ public:
         empty_vao_ = gl::createVertexArray("ssm splat");
     }
 
-    void render(render::FrameContext& ctx) override {
+    void render(frame::FrameContext& ctx) override {
         const scene::RectLight& light = ctx.currentLight();
         passes::Bounds receiver_bounds;
         for (const auto& o : ctx.gpu.objects())
@@ -318,7 +318,7 @@ private:
     }
 
     // Projects the soft shadow map(s) onto the receivers: visibility and the occlusion channel.
-    void visibility(render::FrameContext& ctx, const scene::RectLight& light,
+    void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                     const LightWindow& soft, bool shadowed) {
         ctx.bindOutput();
         const float zero[4] = {0, 0, 0, 0};

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/render/render_job.h"
+#include "renderer/app/render_job.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct FramePlan {
     int frame = 0;
@@ -32,4 +32,4 @@ void checkOutputFolders(const std::vector<FramePlan>& plans);
 // Removes the temporaries of the plans' files that dead processes left behind.
 void removeStaleTemporaries(const std::vector<FramePlan>& plans);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

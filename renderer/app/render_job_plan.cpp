@@ -1,5 +1,5 @@
 // Frame and output planning for the render job: see render_job_plan.h.
-#include "renderer/render/render_job_plan.h"
+#include "renderer/app/render_job_plan.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -18,7 +18,7 @@
 #include "renderer/core/json_bounds.h"
 #include "renderer/core/output_paths.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 namespace fs = std::filesystem;
 namespace {
 
@@ -32,13 +32,17 @@ bool endsWithNoCase(const std::string& text, std::string_view suffix) {
 void checkPattern(const std::string& flag, const std::string& pattern, std::string_view ext,
                   bool per_frame) {
     if (!ext.empty() && !endsWithNoCase(pattern, ext))
-        throw InputError(flag + ": " + pattern + ": the file name must end in " +
-                         std::string(ext) + " (" + flag + " writes " +
-                         (ext == ".exr" ? "OpenEXR" : ext == ".png" ? "PNG" : "JSON") + ")");
+        throw InputError(flag + ": " + pattern + ": the file name must end in " + std::string(ext) +
+                         " (" + flag + " writes " +
+                         (ext == ".exr"   ? "OpenEXR"
+                          : ext == ".png" ? "PNG"
+                                          : "JSON") +
+                         ")");
     if (per_frame && pattern.find('#') == std::string::npos)
         throw InputError(flag + ": " + pattern +
                          ": no # for the frame number, so every frame would write this one file "
-                         "(e.g. " + replaceExtension(pattern, ".####" + std::string(ext)) + ")");
+                         "(e.g. " +
+                         replaceExtension(pattern, ".####" + std::string(ext)) + ")");
 }
 
 // The nearest folder at or above DIR that exists ("." for a relative path with none).
@@ -55,7 +59,8 @@ std::string folderProblem(const fs::path& dir) {
     if (!fs::is_directory(base, ec)) return "'" + base.string() + "' is not a folder";
     const fs::path probe = base / (".penumbra-probe." + std::to_string(::getpid()) + ".tmp");
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-    if (fd < 0) return "folder '" + base.string() + "' is not writable (" + std::strerror(errno) + ")";
+    if (fd < 0)
+        return "folder '" + base.string() + "' is not writable (" + std::strerror(errno) + ")";
     ::close(fd);
     ::unlink(probe.c_str());
     return "";
@@ -78,10 +83,10 @@ std::vector<int> chooseFrames(const RenderRequest& req, const scene::SceneSource
     for (int f : frames)
         if (!std::binary_search(inside.begin(), inside.end(), f)) outside.push_back(f);
     if (outside.empty()) return frames;
-    const std::string what = req.frames_flag + ": frame " + std::to_string(outside.front()) +
-                             (outside.size() > 1 ? " (and " + std::to_string(outside.size() - 1) +
-                                                       " more)" : "") +
-                             " is outside the scene's animation range " + *range;
+    const std::string what =
+        req.frames_flag + ": frame " + std::to_string(outside.front()) +
+        (outside.size() > 1 ? " (and " + std::to_string(outside.size() - 1) + " more)" : "") +
+        " is outside the scene's animation range " + *range;
     if (req.strict) throw InputError(what + " (--strict)");
     if (!req.quiet)
         std::fprintf(stderr, "penumbra: warning: %s (animated values hold their end keys)\n",
@@ -153,4 +158,4 @@ void removeStaleTemporaries(const std::vector<FramePlan>& plans) {
             if (!path->empty()) penumbra::removeStaleTemporaries(*path);
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -1,5 +1,5 @@
 // A frame's files and the scene's canonical name: see render_job_outputs.h.
-#include "renderer/render/render_job_outputs.h"
+#include "renderer/app/render_job_outputs.h"
 
 #include <fstream>
 #include <sstream>
@@ -9,7 +9,7 @@
 #include "renderer/output/exr.h"
 #include "renderer/output/preview.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 namespace fs = std::filesystem;
 
 std::string canonicalScenePath(const fs::path& scene) {
@@ -35,4 +35,4 @@ void writeFrameFiles(const FramePlan& plan, const output::Image& image,
     group.commit();
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

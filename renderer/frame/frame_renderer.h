@@ -1,7 +1,7 @@
 // Renders frames of one scene with one technique on the current GL context: the G-buffer (and
 // with image.samples > 1 the sample G-buffer), the technique once per light, the shade pass;
 // and reads the result back as an Image.
-// Used by the render job and by the GL tests.
+// Driven by renderFrame (render_frame.h), the one render sequence.
 #pragma once
 
 #include <memory>
@@ -11,29 +11,29 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/core/params.h"
+#include "renderer/frame/frame_context.h"
+#include "renderer/frame/technique.h"
 #include "renderer/gl/context.h"
+#include "renderer/gl/pass_timer.h"
 #include "renderer/output/image.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
 #include "renderer/passes/sample_gbuffer.h"
 #include "renderer/passes/shade.h"
-#include "renderer/render/frame_context.h"
-#include "renderer/render/pass_timer.h"
-#include "renderer/techniques/technique.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 class FrameRenderer {
 public:
     // Uploads FIRST's models and creates the technique INFO with PARAMS.
-    FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& first,
-                  const techniques::TechniqueInfo& info, const Params& params);
+    FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& first, const TechniqueInfo& info,
+                  const Params& params);
 
     // Recreates the technique when PARAMS differ from the current ones.
     void setParams(const Params& params);
     // Renders SCENE (same objects as FIRST, animated values) with every pass timed by TIMER.
     // Returns the technique statistics of this render.
-    nlohmann::json render(const scene::Scene& scene, PassTimer& timer);
+    nlohmann::json render(const scene::Scene& scene, gl::PassTimer& timer);
     // The last render as an image (channels of PRODUCT.md, no attributes).
     output::Image readImage() const;
 
@@ -45,22 +45,23 @@ public:
     // Lights rendered per frame: the scene's and those made of its environment.
     int lightCount() const { return lights_; }
     const Params& params() const { return params_; }
+    const TechniqueInfo& technique() const { return info_; }
 
 private:
     const gl::ContextInfo& gl_;
-    const techniques::TechniqueInfo& info_;
+    const TechniqueInfo& info_;
     Params params_;
     int width_, height_, lights_;  // lights_: the scene's and the environment's
     const scene::Scene& first_;
-    techniques::EnvironmentLights environment_;
+    EnvironmentLights environment_;
     std::vector<scene::RectLight> all_lights_;
     passes::GpuScene gpu_;
     passes::GBuffer gbuffer_;
     std::unique_ptr<passes::SampleGBuffer> sample_gbuffer_;  // image.samples > 1 only
     passes::Shade shade_;
-    std::unique_ptr<techniques::Technique> technique_;
-    std::vector<techniques::DiagnosticChannel> diagnostics_;
+    std::unique_ptr<Technique> technique_;
+    std::vector<DiagnosticChannel> diagnostics_;
     std::unique_ptr<OutputTargets> targets_;
 };
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

@@ -10,41 +10,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/gl/handles.h"
+#include "renderer/frame/output_targets.h"
+#include "renderer/gl/pass_timer.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
-#include "renderer/render/pass_timer.h"
 #include "renderer/scene/scene.h"
 
-namespace penumbra::render {
-
-// Per-light output layers shared by the frame: visibility (RGBA32F array, one layer per light:
-// r = the visible area fraction; g, b, a = the contribution-weighted sums and flag that
-// glsl/passes/shading.glsl reads, 0 where a technique has none) and one R32F array per diagnostic
-// channel.
-class OutputTargets {
-public:
-    OutputTargets(int width, int height, int lights, int diagnostics);
-    // Binds a framebuffer with colour 0 = visibility layer LIGHT, colour 1+i = diagnostic i's
-    // layer LIGHT, viewport = image size.
-    void bind(int light);
-    // Replaces visibility layer LIGHT with RGBA (width x height x 4 floats, top row first): for
-    // techniques that compute visibility on the CPU.
-    void uploadVisibility(int light, std::span<const float> rgba);
-    const gl::Texture& visibility() const { return visibility_; }
-    const std::vector<gl::Texture>& diagnostics() const { return diagnostics_; }
-
-private:
-    int width_, height_;
-    gl::Texture visibility_;
-    std::vector<gl::Texture> diagnostics_;
-    gl::Framebuffer fbo_;
-};
+namespace penumbra::frame {
 
 class FrameContext {
 public:
     FrameContext(const scene::Scene& s, const passes::GpuScene& g, const passes::GBuffer& gb,
-                 const passes::CameraMatrices& cam, OutputTargets& targets, PassTimer& timer,
+                 const passes::CameraMatrices& cam, OutputTargets& targets, gl::PassTimer& timer,
                  nlohmann::json& st)
         : scene(s),
           gpu(g),
@@ -66,7 +43,7 @@ public:
     // Whether the current light stands for part of the environment map.
     bool environmentLight() const { return light >= static_cast<int>(scene.lights.size()); }
     // Whether this is the environment's irradiance layer (after every light; see
-    // techniques::EnvironmentLights), which has no currentLight().
+    // EnvironmentLights), which has no currentLight().
     bool environmentLayer() const { return light == static_cast<int>(lights.size()); }
 
     // Runs FN as one named, timed pass. With several lights, a technique's pass (light >= 0)
@@ -83,10 +60,10 @@ public:
 
 private:
     OutputTargets& targets_;
-    PassTimer& timer_;
+    gl::PassTimer& timer_;
 
 public:
     nlohmann::json& stats;  // technique statistics, summed over lights by the technique
 };
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

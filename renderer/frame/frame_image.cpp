@@ -1,19 +1,19 @@
 // Frame image assembly: see frame_image.h.
-#include "renderer/render/frame_image.h"
+#include "renderer/frame/frame_image.h"
 
 #include <algorithm>
 #include <limits>
 
 #include "renderer/passes/readback.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 using output::PixelType;
 
 output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade& shade,
                              const OutputTargets& targets, int lights,
                              const std::string& technique_name,
-                             const std::vector<techniques::DiagnosticChannel>& diagnostics) {
+                             const std::vector<DiagnosticChannel>& diagnostics) {
     const int w = gbuffer.width(), h = gbuffer.height();
     const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
     output::Image img;
@@ -70,7 +70,7 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
             for (size_t i = 0; i < n; ++i) {
                 if (l == 0)
                     ch.pixels[i] = layer[i];
-                else if (diagnostics[d].combine == techniques::DiagnosticChannel::Combine::Sum)
+                else if (diagnostics[d].combine == DiagnosticChannel::Combine::Sum)
                     ch.pixels[i] += layer[i];
                 else
                     ch.pixels[i] = std::max(ch.pixels[i], layer[i]);
@@ -80,4 +80,4 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
     return img;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 // A duration as a person reads it: "0.4s", "12s", "3m 05s", "1h 02m".
 std::string formatDuration(double seconds);
@@ -34,4 +34,4 @@ private:
     Clock::time_point start_, last_;
 };
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -1,12 +1,12 @@
 // OpenEXR camera attributes: see camera_attributes.h. GL's view and projection (column vectors,
 // camera looking down -z) are turned into Imath's row-vector matrices.
-#include "renderer/render/camera_attributes.h"
+#include "renderer/frame/camera_attributes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/passes/gbuffer.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 namespace {
 
@@ -20,8 +20,7 @@ std::array<float, 16> imathOrder(const glm::mat4& m) {
 
 }  // namespace
 
-void addCameraAttributes(output::Image& image, const scene::Camera& camera, int width,
-                         int height) {
+void addCameraAttributes(output::Image& image, const scene::Camera& camera, int width, int height) {
     const passes::CameraMatrices m = passes::cameraMatrices(camera, width, height);
     // GL's eye space looks down -z; OpenEXR's camera space (RenderMan's) looks down +z.
     const glm::mat4 flipZ = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.0f, -1.0f));
@@ -38,4 +37,4 @@ void addCameraAttributes(output::Image& image, const scene::Camera& camera, int 
     image.float_attributes.emplace_back("penumbra/camera/far", camera.far);
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

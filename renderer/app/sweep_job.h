@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "renderer/core/sweep_spec.h"
+#include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene_source.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct SweepRequest {
     std::filesystem::path scene;
@@ -24,7 +25,7 @@ struct SweepRequest {
     int frame = 0;
     std::filesystem::path out;  // -o DIR
     gl::ContextRequest gl;
-    int warmup = 1, repeat = 3;
+    frame::FrameRuns runs{1, 3};  // --warmup, --repeat
     bool quiet = false;
     bool report = true;  // run scripts/sweep-report at the end
     // --jobs N: render the runs as N parallel `penumbra sweep --run-index K` processes through
@@ -39,4 +40,4 @@ struct SweepRequest {
 // rendering) and BackendError.
 int runSweepJob(const SweepRequest& request);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -1,7 +1,7 @@
 // Pass timing: see pass_timer.h.
-#include "renderer/render/pass_timer.h"
+#include "renderer/gl/pass_timer.h"
 
-namespace penumbra::render {
+namespace penumbra::gl {
 
 void PassTimer::begin(const std::string& name) {
     if (on_begin) on_begin(name);
@@ -49,4 +49,4 @@ std::vector<PassTime> PassTimer::finishFrame() {
     return out;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::gl

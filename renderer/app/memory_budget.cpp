@@ -1,6 +1,7 @@
 // Estimates of a render's buffers: see memory_budget.h. Sizes follow the passes' allocations
-// (passes/gbuffer.cpp, sample_gbuffer.cpp, shade.cpp, frame_context.cpp and each technique's).
-#include "renderer/render/memory_budget.h"
+// (passes/gbuffer.cpp, sample_gbuffer.cpp, shade.cpp, frame/output_targets.cpp and each
+// technique's).
+#include "renderer/app/memory_budget.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -8,7 +9,7 @@
 #include "renderer/core/error.h"
 #include "renderer/core/memory_limit.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 namespace {
 
 using u64 = std::uint64_t;
@@ -153,4 +154,4 @@ void checkMemoryBudget(const scene::Scene& s, std::string_view technique, const 
                          " (--memory-limit)");
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -5,7 +5,7 @@
 #include "renderer/output/image.h"
 #include "renderer/scene/scene.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 // Adds to IMAGE: `worldToCamera` (world to a left-handed camera space, +x right, +y up, +z the
 // viewing direction: objects in front have z > 0, Z's depth), `worldToNDC` (world to NDC, (0, 0)
@@ -14,4 +14,4 @@ namespace penumbra::render {
 // `penumbra/camera/fov_y` (degrees), `penumbra/camera/near`, `penumbra/camera/far` (metres).
 void addCameraAttributes(output::Image& image, const scene::Camera& camera, int width, int height);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <string>
 
+#include "renderer/app/render_job_plan.h"
 #include "renderer/output/image.h"
 #include "renderer/output/timing.h"
-#include "renderer/render/render_job_plan.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 // The scene as outputs name it, the same however the path was typed: relative to the working
 // directory when the file lies below it ("scenes/walk.json"), else its file name and content
@@ -21,4 +21,4 @@ std::string canonicalScenePath(const std::filesystem::path& scene);
 void writeFrameFiles(const FramePlan& plan, const output::Image& image,
                      const output::FrameReport& report);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -1,13 +1,13 @@
 // Frame rendering: see frame_renderer.h.
-#include "renderer/render/frame_renderer.h"
+#include "renderer/frame/frame_renderer.h"
 
+#include "renderer/frame/frame_image.h"
 #include "renderer/gl/debug.h"
-#include "renderer/render/frame_image.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 FrameRenderer::FrameRenderer(const gl::ContextInfo& gl, const scene::Scene& first,
-                             const techniques::TechniqueInfo& info, const Params& params)
+                             const TechniqueInfo& info, const Params& params)
     : gl_(gl),
       info_(info),
       width_(first.image.width),
@@ -42,7 +42,7 @@ void FrameRenderer::setParams(const Params& params) {
     technique_->prepare(gl_, gpu_);
 }
 
-nlohmann::json FrameRenderer::render(const scene::Scene& s, PassTimer& timer) {
+nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer) {
     gpu_.update(s);
     const passes::CameraMatrices camera = passes::cameraMatrices(s.camera, width_, height_);
     nlohmann::json stats = nlohmann::json::object();
@@ -83,4 +83,4 @@ output::Image FrameRenderer::readImage() const {
     return image;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

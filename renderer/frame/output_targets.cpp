@@ -1,10 +1,12 @@
-// Frame context and output targets: see frame_context.h.
-#include "renderer/render/frame_context.h"
+// Output targets: see output_targets.h.
+#include "renderer/frame/output_targets.h"
+
+#include <algorithm>
+#include <string>
 
 #include "renderer/core/error.h"
-#include "renderer/gl/debug.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 OutputTargets::OutputTargets(int width, int height, int lights, int diagnostics)
     : width_(width),
@@ -41,17 +43,4 @@ void OutputTargets::uploadVisibility(int light, std::span<const float> rgba) {
                             GL_FLOAT, rgba.data() + size_t(y) * row);
 }
 
-void FrameContext::pass(const std::string& name, const std::function<void()>& fn) {
-    std::string full = name;
-    if (light >= 0 && lights.size() > 1) {
-        full += '@';
-        full += std::to_string(light);
-    }
-    gl::DebugGroup group(full);
-    timer_.begin(full);
-    fn();
-    timer_.end();
-    gl::checkErrors(full);
-}
-
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

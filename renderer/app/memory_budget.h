@@ -12,7 +12,7 @@
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 // ssm splats each of its map_size^2 micro-patches over up to ssm_size^2 texels: refused when
 // map_size x ssm_size exceeds this (the default 256 x 256 is 2^16).
@@ -41,4 +41,4 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view t
 void checkMemoryBudget(const scene::Scene& s, std::string_view technique, const Params& params,
                        const gl::ContextInfo* gl);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

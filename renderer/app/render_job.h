@@ -8,10 +8,11 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
 #include "renderer/scene/scene_source.h"
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct RenderRequest {
     std::filesystem::path scene;
@@ -27,16 +28,15 @@ struct RenderRequest {
     gl::ContextRequest gl;
     bool skip_existing = false;
     bool list_frames = false;  // print the frames to render (stdout) and stop: no GL
-    int warmup = 0;
-    int repeat = 1;
+    frame::FrameRuns runs;     // --warmup, --repeat
     bool quiet = false;
 };
 
-// "unknown technique 'NAME' (did you mean 'X'? known: a, b, ...)".
+// "unknown technique 'NAME' (did you mean 'X'? known: a, b, ...)" (render_job_checks.cpp).
 std::string unknownTechniqueMessage(const std::string& name);
 
 // Returns the exit code (0, or 1 when a frame failed at run time). Throws InputError (bad
 // input, before anything is written) and BackendError (no context).
 int runRenderJob(const RenderRequest& request);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

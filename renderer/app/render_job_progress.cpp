@@ -1,5 +1,5 @@
 // The render job's progress line: see render_job_progress.h.
-#include "renderer/render/render_job_progress.h"
+#include "renderer/app/render_job_progress.h"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 std::string formatDuration(double seconds) {
     char buf[32];
@@ -75,4 +75,4 @@ void Progress::show(const std::string& pass, bool force) {
     shown_ = true;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -10,7 +10,7 @@
 
 #include "renderer/gl/handles.h"
 
-namespace penumbra::render {
+namespace penumbra::gl {
 
 struct PassTime {
     std::string name;
@@ -40,4 +40,4 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-}  // namespace penumbra::render
+}  // namespace penumbra::gl

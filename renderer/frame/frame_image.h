@@ -6,17 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "renderer/frame/frame_context.h"
+#include "renderer/frame/technique.h"
 #include "renderer/output/image.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/shade.h"
-#include "renderer/render/frame_context.h"
-#include "renderer/techniques/technique.h"
 
-namespace penumbra::render {
+namespace penumbra::frame {
 
 output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade& shade,
                              const OutputTargets& targets, int lights,
                              const std::string& technique_name,
-                             const std::vector<techniques::DiagnosticChannel>& diagnostics);
+                             const std::vector<DiagnosticChannel>& diagnostics);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::frame

@@ -1,0 +1,202 @@
+// The render job: see render_job.h. Its steps: the input (render_job_checks.h,
+// render_job_plan.h), the context and its limits, then each frame through frame::renderFrame
+// into its files (render_job_outputs.h), with progress (render_job_progress.h).
+#include "renderer/app/render_job.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include "renderer/app/memory_budget.h"
+#include "renderer/app/render_job_checks.h"
+#include "renderer/app/render_job_outputs.h"
+#include "renderer/app/render_job_plan.h"
+#include "renderer/app/render_job_progress.h"
+#include "renderer/core/error.h"
+#include "renderer/frame/camera_attributes.h"
+#include "renderer/frame/render_frame.h"
+#include "renderer/gl/debug.h"
+#include "renderer/output/cryptomatte.h"
+#include "renderer/output/timing.h"
+
+namespace penumbra::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// What step 1 makes of the request: the scene, its technique and the frames to write.
+struct JobInput {
+    scene::SceneSource source;
+    scene::Scene first;  // the first frame's scene
+    const techniques::TechniqueInfo& info;
+    Params params;  // the first frame's
+    std::vector<FramePlan> plans;
+};
+
+// 1. Everything from the input, validated before any GL or output.
+JobInput loadInput(const RenderRequest& req) {
+    refuseModelAsScene(req.scene);
+    scene::LoadOptions options;
+    options.technique = req.technique;
+    auto source = scene::SceneSource::load(req.scene, req.overrides, options);
+    const std::vector<int> frames = chooseFrames(req, source);
+    scene::Scene first = source.at(frames.front());
+    const techniques::TechniqueInfo& info = findTechniqueOrThrow(first, req);
+    checkTechniqueOverrides(info, req);
+    Params params = resolveFor(info, first);
+    for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
+    std::vector<FramePlan> plans = planFrames(req, first.name, frames);
+    return {std::move(source), std::move(first), info, std::move(params), std::move(plans)};
+}
+
+// The frames still to write: false when --skip-existing leaves none. Output folders are checked
+// and stale temporaries removed first, so an unwritable folder is found before the first frame.
+bool prepareOutputs(const RenderRequest& req, const std::vector<FramePlan>& plans) {
+    checkOutputFolders(plans);
+    removeStaleTemporaries(plans);
+    if (std::any_of(plans.begin(), plans.end(), [](const FramePlan& p) { return !p.skip; }))
+        return true;
+    if (!req.quiet)
+        std::fprintf(stderr, "penumbra: all %zu frames exist already (--skip-existing)\n",
+                     plans.size());
+    return false;  // a resumed farm job with nothing left needs no GL context
+}
+
+// What every frame of the job shares: the renderer, its timer, the backend and the scene name.
+struct JobFrames {
+    const RenderRequest& req;
+    const JobInput& in;
+    const gl::ContextInfo& gl;
+    frame::FrameRenderer& renderer;
+    gl::PassTimer& timer;
+    nlohmann::json backend;
+    std::string scene_name;  // canonical: the same from any folder
+};
+
+// The timing report of R: passes in first-run order with one figure per timed run, then the
+// readback.
+output::FrameReport timingReport(const frame::RenderedFrame& r, const char* clock) {
+    output::FrameReport report;
+    std::map<std::string, size_t> pass_index;
+    for (const frame::TimedRun& run : r.runs) {
+        report.frame_ms.push_back(run.frame_ms);
+        for (const auto& t : run.passes) {
+            auto [it, inserted] = pass_index.emplace(t.name, report.passes.size());
+            if (inserted) report.passes.push_back({t.name, clock, {}});
+            report.passes[it->second].ms.push_back(t.ms);
+        }
+    }
+    report.passes.push_back({"readback", "cpu", {r.readback_ms}});
+    return report;
+}
+
+// The render job's header attributes after renderFrame's: scene, backend, frame, samples,
+// camera, Cryptomatte.
+void addJobAttributes(output::Image& image, const JobFrames& job, const scene::Scene& s,
+                      int frame) {
+    image.attributes.insert(image.attributes.end(), {{"penumbra/scene", job.scene_name},
+                                                     {"penumbra/backend", job.gl.api},
+                                                     {"penumbra/gl_vendor", job.gl.vendor},
+                                                     {"penumbra/gl_renderer", job.gl.renderer},
+                                                     {"penumbra/gl_version", job.gl.version}});
+    // Numbers as EXR int attributes (they were strings until this change; README changelog).
+    image.int_attributes = {{"penumbra/frame", frame},
+                            {"penumbra/samples", job.renderer.samples()}};
+    frame::addCameraAttributes(image, s.camera, image.width, image.height);
+    std::vector<std::string> names;
+    for (const auto& object : s.objects) names.push_back(object.name);
+    output::addCryptomatte(image, "CryptoObject", names, job.renderer.samples());
+}
+
+// Renders PLAN's frame and writes its EXR, timing JSON and preview. Throws RuntimeError.
+void renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
+    const RenderRequest& req = job.req;
+    scene::Scene s = job.in.source.at(plan.frame);
+    frame::RenderedFrame r =
+        frame::renderFrame(job.renderer, s, resolveFor(job.in.info, s), job.timer, req.runs);
+    addJobAttributes(r.image, job, s, plan.frame);
+    output::FrameReport report = timingReport(r, job.timer.clockName());
+    report.scene = job.scene_name;
+    report.frame = plan.frame;
+    report.technique = std::string(job.in.info.name);
+    report.params = job.renderer.params().json();
+    report.backend = job.backend;
+    report.width = job.in.first.image.width;
+    report.height = job.in.first.image.height;
+    report.samples = job.renderer.samples();
+    report.warmup = req.runs.warmup;
+    report.stats = r.stats;
+    report.stats["triangles"] = job.renderer.gpuScene().triangleCount();
+    report.stats["lights"] = job.renderer.lightCount();
+    report.output = {{"exr", plan.exr}};
+    if (!plan.preview.empty()) report.output["preview"] = plan.preview;
+    writeFrameFiles(plan, r.image, report);
+}
+
+struct Tally {
+    int written = 0, skipped = 0, failed = 0;
+};
+
+// 3. Per-run GPU resources, then every planned frame; a frame that fails is counted, not fatal.
+Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::ContextInfo& gl) {
+    frame::FrameRenderer renderer(gl, in.first, in.info, in.params);
+    gl::PassTimer timer(gl.software);
+    const nlohmann::json backend = {{"api", gl.api},         {"device", gl.device},
+                                    {"vendor", gl.vendor},   {"renderer", gl.renderer},
+                                    {"version", gl.version}, {"clock", timer.clockName()}};
+    const JobFrames job{req, in, gl, renderer, timer, backend, canonicalScenePath(req.scene)};
+    const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
+    Progress progress(progress_on, in.plans.size());
+    if (progress_on) timer.on_begin = [&](const std::string& pass) { progress.pass(pass); };
+    Tally tally;
+    for (size_t fi = 0; fi < in.plans.size(); ++fi) {
+        const FramePlan& plan = in.plans[fi];
+        if (plan.skip) {
+            ++tally.skipped;
+            continue;
+        }
+        progress.frame(fi, plan.frame);
+        try {
+            renderPlannedFrame(job, plan);
+            ++tally.written;
+        } catch (const RuntimeError& e) {
+            progress.done();
+            std::fprintf(stderr, "penumbra: frame %d: %s\n", plan.frame, e.what());
+            ++tally.failed;
+        }
+    }
+    progress.done();
+    return tally;
+}
+
+}  // namespace
+
+int runRenderJob(const RenderRequest& req) {
+    const auto job_start = Clock::now();
+    const JobInput in = loadInput(req);  // 1.
+    if (req.list_frames) {
+        for (const auto& p : in.plans)
+            if (!p.skip) std::printf("%d\n", p.frame);
+        return 0;
+    }
+    if (!prepareOutputs(req, in.plans)) return 0;
+
+    // 2. The context (exit 3 if none), then the limits only GL knows.
+    auto context = gl::Context::create(req.gl);
+    const gl::ContextInfo& glinfo = context->info();
+    gl::enableDebugOutput(req.gl.debug);
+    checkGlLimits(in.first, in.params, glinfo);
+    checkMemoryBudget(in.first, in.info.name, in.params, &glinfo);  // exit 2 before allocating
+
+    const Tally tally = renderFrames(req, in, glinfo);  // 3.
+    if (!req.quiet && in.plans.size() > 1)
+        std::fprintf(stderr, "penumbra: %zu frames: %d written, %d skipped, %d failed, %.1f s\n",
+                     in.plans.size(), tally.written, tally.skipped, tally.failed,
+                     std::chrono::duration<double>(Clock::now() - job_start).count());
+    return tally.failed ? static_cast<int>(ExitCode::RuntimeFailure) : 0;
+}
+
+}  // namespace penumbra::app

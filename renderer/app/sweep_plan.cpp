@@ -1,0 +1,72 @@
+// The sweep's runs and references: see sweep_plan.h.
+#include "renderer/app/sweep_plan.h"
+
+#include <map>
+
+#include "penumbra/version.h"
+#include "renderer/app/memory_budget.h"
+#include "renderer/core/content_hash.h"
+#include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::app {
+namespace {
+
+constexpr size_t kMaxRuns = 2000;
+
+// Loads and validates RENDER's scene (exit 2 on bad input) and fills its hash and technique.
+void validate(SweepRender& render, const SweepRequest& req) {
+    scene::LoadOptions options;
+    options.technique = render.technique;
+    auto source = scene::SceneSource::load(req.scene, render.overrides, options);
+    scene::Scene s = source.at(req.frame);
+    render.technique_name = s.technique.value("name", std::string("hard"));
+    render.width = s.image.width;
+    render.height = s.image.height;
+    const auto* info = techniques::findTechnique(render.technique_name);
+    if (!info)
+        throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
+                         quoteText(render.technique_name) + "'");
+    checkMemoryBudget(s, render.technique_name,
+                      resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
+                      nullptr);
+    render.hash = contentHash(source.document().dump() + "|frame " + std::to_string(req.frame) +
+                              "|" + PENUMBRA_VERSION);
+}
+
+// Technique parameters (varied, or fixed by -D) belong to the technique under test, not to the
+// reference, unless both are the same technique (-D only).
+bool techniqueKey(const std::string& key) {
+    return key == "technique" || key.rfind("technique.", 0) == 0;
+}
+
+}  // namespace
+
+SweepPlan planSweep(const SweepRequest& req) {
+    SweepPlan plan;
+    plan.points = cartesianProduct(req.axes, kMaxRuns);
+    std::map<std::string, size_t> reference_of_hash;
+    for (const auto& point : plan.points) {
+        SweepRender run{req.overrides, req.technique, {}, {}};
+        SweepRender ref{{}, req.reference_technique, {}, {}};
+        for (const auto& o : req.overrides)
+            if (!techniqueKey(o.key) || req.technique == req.reference_technique)
+                ref.overrides.push_back(o);
+        for (const auto& [key, value] : point) {
+            run.overrides.push_back({key, value.dump()});
+            if (!techniqueKey(key)) ref.overrides.push_back({key, value.dump()});
+        }
+        ref.overrides.insert(ref.overrides.end(), req.reference_sets.begin(),
+                             req.reference_sets.end());
+        validate(run, req);
+        validate(ref, req);
+        auto [it, inserted] = reference_of_hash.emplace(ref.hash, plan.references.size());
+        if (inserted) plan.references.push_back(ref);
+        plan.run_reference.push_back(it->second);
+        plan.runs.push_back(std::move(run));
+    }
+    return plan;
+}
+
+}  // namespace penumbra::app
