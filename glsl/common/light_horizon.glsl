@@ -32,4 +32,10 @@ float lightShareAboveHorizon(vec3 corner, vec3 edge_x, vec3 edge_y, vec3 p, vec3
     return horizonArea(dot(corner - p, n), dot(edge_x, n), dot(edge_y, n));
 }
 
+// The same for a light of SIZE along RIGHT and UP (unit axes) centred at CENTRE.
+float centredLightShareAboveHorizon(vec3 centre, vec3 right, vec3 up, vec2 size, vec3 p, vec3 n) {
+    vec3 ex = size.x * right, ey = size.y * up;
+    return lightShareAboveHorizon(centre - 0.5 * (ex + ey), ex, ey, p, n);
+}
+
 #endif  // PENUMBRA_LIGHT_HORIZON_GLSL

@@ -41,8 +41,8 @@ std::vector<ChannelPair> selectChannels(const Image& ref, const Image& test,
         if (!r) {
             std::vector<std::string> known;
             for (const auto& c : ref.channels) known.push_back(c.name);
-            throw CompareMismatch(Side::Reference, "reference has no channel '" +
-                                                       name + "'" + didYouMean(name, known));
+            throw CompareMismatch(Side::Reference, "reference has no channel '" + name + "'" +
+                                                       didYouMean(name, known));
         }
         if (!t) throw CompareMismatch(Side::Test, "test image has no channel '" + name + "'");
         pairs.push_back({r, t});

@@ -14,7 +14,9 @@ namespace penumbra::output {
 
 namespace {
 
-uint32_t rotl32(uint32_t x, int r) { return (x << r) | (x >> (32 - r)); }
+uint32_t rotl32(uint32_t x, int r) {
+    return (x << r) | (x >> (32 - r));
+}
 
 std::string hexHash(uint32_t hash) {
     char buf[9];

@@ -17,10 +17,10 @@ public:
 };
 
 // Writes IMAGE to PATH atomically (core/atomic_file.h; ZIP compression, increasing Y, each
-// channel as its `type`, attributes as string, int, float and M44f attributes). Creates missing parent folders.
-// Throws RuntimeError naming PATH on failure (also for an empty image, a channel of the wrong
-// size, duplicate channel or attribute names, or an attribute named like a standard one such
-// as "compression"); nothing is left under PATH then.
+// channel as its `type`, attributes as string, int, float and M44f attributes). Creates missing
+// parent folders. Throws RuntimeError naming PATH on failure (also for an empty image, a channel of
+// the wrong size, duplicate channel or attribute names, or an attribute named like a standard one
+// such as "compression"); nothing is left under PATH then.
 void writeExr(const std::filesystem::path& path, const Image& image);
 
 // Reads every channel (as float; `type` says how it was stored) and the string, int, float

@@ -50,7 +50,9 @@ void writeErrorHeatmap(const std::filesystem::path& path, const Image& ref, cons
     writePngRgb8(path, ref.width, ref.height, rgb);
 }
 
-int colourBarRows(int height) { return 2 + std::max(6, height / 10); }
+int colourBarRows(int height) {
+    return 2 + std::max(6, height / 10);
+}
 
 float defaultDifferenceScale(const Image& diff) {
     float m = 0.0f;

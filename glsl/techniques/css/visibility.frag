@@ -150,9 +150,8 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
 // closed object that casts (common/light_horizon.glsl). Objects that cast no shadow do not
 // hide the light from themselves (main() takes 1 for them).
 float aboveHorizon(vec3 p, vec3 n) {
-    vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right + u_light_size.y * u_light_up);
-    return lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
-                                  u_light_size.y * u_light_up, p, n);
+    return centredLightShareAboveHorizon(u_light_centre, u_light_right, u_light_up, u_light_size,
+                                         p, n);
 }
 
 void main() {

@@ -85,6 +85,12 @@ bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion, out int
     return weights > 0.0;
 }
 
+// The share of the light above the tangent plane of P (unit normal N).
+float shareAboveHorizon(vec3 p, vec3 n) {
+    return centredLightShareAboveHorizon(u_light_centre, u_light_right, u_light_up, u_light_size,
+                                         p, n);
+}
+
 void main() {
     ivec2 pix = ivec2(gl_FragCoord.xy);
     vec4 pos = texelFetch(u_position, pix, 0);
@@ -127,10 +133,7 @@ void main() {
                 }
             }
             if (dot(n, u_light_centre - pos.xyz) <= 0.0 || nearest < 0) {
-                vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
-                                                      u_light_size.y * u_light_up);
-                float share = lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
-                                                     u_light_size.y * u_light_up, pos.xyz, n);
+                float share = shareAboveHorizon(pos.xyz, n);
                 o_visibility = vec4(share, 0.0, 0.0, 0.0);
                 o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
                 return;
@@ -144,11 +147,7 @@ void main() {
         // An object's patches never shadow the surface they lie on (splat.vert): the light's
         // part below that surface's horizon, which the object itself hides, is taken here, in
         // closed form, as css does; the other casters' occlusion falls on the rest alike.
-        vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-        vec3 corner = u_light_centre - 0.5 * (u_light_size.x * u_light_right +
-                                              u_light_size.y * u_light_up);
-        v *= lightShareAboveHorizon(corner, u_light_size.x * u_light_right,
-                                    u_light_size.y * u_light_up, pos.xyz, n);
+        v *= shareAboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz));
     }
     o_visibility = vec4(v, 0.0, 0.0, 0.0);
     o_occlusion = vec4(1.0 - v, 0.0, 0.0, 0.0);

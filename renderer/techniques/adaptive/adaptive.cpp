@@ -234,6 +234,12 @@ public:
     }
 
 private:
+    // Whether splitting CELL keeps the light's maps within max_maps.
+    bool fitsMapBudget(const adaptive::LightQuadtree& tree,
+                       const adaptive::QuadtreeCell& cell) const {
+        return int(tree.samples().size()) + tree.newSamples(cell) <= max_maps_;
+    }
+
     // Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
     // order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
     std::vector<adaptive::QuadtreeCell> splitByError(
@@ -250,7 +256,7 @@ private:
         }
         std::vector<adaptive::QuadtreeCell> next;
         for (size_t i : budget.choose(errors)) {
-            if (int(tree.samples().size()) + tree.newSamples(cells[i]) > max_maps_) {
+            if (!fitsMapBudget(tree, cells[i])) {
                 budget_hit = true;
                 budget.refused(errors[i]);
                 continue;
@@ -283,7 +289,7 @@ private:
                          [](const auto& a, const auto& b) { return a.first > b.first; });
         std::vector<adaptive::QuadtreeCell> next;
         for (const auto& [worst, i] : refine) {
-            if (int(tree.samples().size()) + tree.newSamples(cells[i]) > max_maps_) {
+            if (!fitsMapBudget(tree, cells[i])) {
                 budget_hit = true;
                 continue;
             }

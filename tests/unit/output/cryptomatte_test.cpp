@@ -63,7 +63,8 @@ TEST(Cryptomatte, ChannelsAndManifestReadBack) {
     EXPECT_EQ(attribute(read, prefix + "name"), "CryptoObject");
     EXPECT_EQ(attribute(read, prefix + "hash"), "MurmurHash3_32");
     EXPECT_EQ(attribute(read, prefix + "conversion"), "uint32_to_float32");
-    const auto manifest = nlohmann::json::parse(attribute(read, prefix + "manifest"), nullptr, false);
+    const auto manifest =
+        nlohmann::json::parse(attribute(read, prefix + "manifest"), nullptr, false);
     EXPECT_EQ(manifest, nlohmann::json({{"floor", "7819c83c"}, {"bunny", "13851a76"}}));
 
     const ImageChannel* rank = read.find("CryptoObject00.R");
@@ -72,7 +73,7 @@ TEST(Cryptomatte, ChannelsAndManifestReadBack) {
     EXPECT_EQ(rank->type, PixelType::Float);
     EXPECT_EQ(rank->pixels[0], cryptomatteId(0x7819c83cu));
     EXPECT_EQ(rank->pixels[1], cryptomatteId(0x13851a76u));
-    EXPECT_EQ(rank->pixels[2], 0.0f);  // background: no object
+    EXPECT_EQ(rank->pixels[2], 0.0f);                                     // background: no object
     EXPECT_EQ(coverage->pixels, (std::vector<float>{1.0f, 0.5f, 0.0f}));  // A at 4 samples
     EXPECT_NE(read.find("CryptoObject00.B"), nullptr);
     EXPECT_NE(read.find("CryptoObject00.A"), nullptr);
