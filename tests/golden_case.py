@@ -6,6 +6,8 @@
                                                           regenerate goldens, printing metrics
                                                           against the old ones
   golden_case.py list                                     the case names
+  golden_case.py coverage --binary PENUMBRA               fail unless every technique that
+                                                          `penumbra techniques` lists has a case
 """
 import argparse
 import json
@@ -94,6 +96,19 @@ def update(args):
     return 0
 
 
+def coverage(args):
+    r = subprocess.run([args.binary, "techniques", "--json"], capture_output=True, text=True,
+                       check=True)
+    registered = [t["name"] for t in json.loads(r.stdout)]
+    covered = {c["technique"] for c in load_cases().values()}
+    missing = [t for t in registered if t not in covered]
+    if missing:
+        print(f"FAIL: no golden case in golden/spec.json for: {', '.join(missing)}")
+        return 1
+    print(f"every registered technique has a golden case: {', '.join(registered)}")
+    return 0
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="command", required=True)
@@ -105,10 +120,14 @@ def main():
         s.add_argument("--binary", required=True)
         s.add_argument("--out", required=True)
     sub.add_parser("list")
+    cov = sub.add_parser("coverage")
+    cov.add_argument("--binary", required=True)
     args = p.parse_args()
     if args.command == "list":
         print("\n".join(sorted(load_cases())))
         return 0
+    if args.command == "coverage":
+        return coverage(args)
     return check(args) if args.command == "check" else update(args)
 
 
