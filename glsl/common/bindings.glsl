@@ -4,4 +4,5 @@
 #define BINDING_LIGHTS 1
 #define BINDING_SAMPLE_LOOKUPS 2
 #define BINDING_CASTER_FLAGS 6
+#define BINDING_GEOMETRIC_NORMAL 15  // texture unit of the G-buffer geometric normal
 #define MAX_SAMPLE_LOOKUPS 1024

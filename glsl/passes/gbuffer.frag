@@ -1,5 +1,6 @@
 #version 450 core
-// G-buffer targets: position (w = 1 on geometry), normal + view depth, linear albedo, object id.
+// G-buffer targets: position (w = 1 on geometry), normal + view depth, linear albedo, object id,
+// and the geometric normal: the plane of the drawn triangle, facing the side seen.
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -14,6 +15,7 @@ layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
 layout(location = 2) out vec4 o_albedo;
 layout(location = 3) out int o_id;
+layout(location = 4) out vec4 o_geometric_normal;
 
 void main() {
     vec3 n = normalize(v_normal);
@@ -24,4 +26,11 @@ void main() {
     o_normal = vec4(n, v_view_depth);
     o_albedo = vec4(albedo.rgb, 1.0);
     o_id = u_object_id;
+    // The derivatives of the interpolated position span the triangle's plane (helper
+    // invocations extrapolate the same triangle); its normal is turned to the shading normal's
+    // side, which already faces the viewer.
+    vec3 g = cross(dFdx(v_world), dFdy(v_world));
+    float len = length(g);
+    g = len > 0.0 ? g / len : n;
+    o_geometric_normal = vec4(dot(g, n) < 0.0 ? -g : g, 0.0);
 }

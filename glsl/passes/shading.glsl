@@ -8,6 +8,7 @@
 
 #include "common/bindings.glsl"
 #include "common/caster_flags.glsl"
+#include "common/geometric_normal.glsl"
 #include "common/light_horizon.glsl"
 #include "common/light_irradiance.glsl"
 
@@ -30,7 +31,8 @@ uniform int u_env_layer = -1;
 
 const float kPi = 3.14159265358979;
 
-// The share of light L's contribution at POS (normal N) that reaches it, from the technique's
+// The share of light L's contribution at POS (geometric normal N: the plane the technique's
+// horizon rule used) that reaches it, from the technique's
 // layer VIS. Where the technique sampled the light, the contribution-weighted share of its
 // samples; where none of them lies above the horizon, nothing says the part above is hidden
 // (E has left out the rest): 1. Otherwise, on an object that casts (CASTS), V counts the
@@ -51,6 +53,8 @@ float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n, bool casts) {
 // irradiance-weighted visibility (the plain mean where no light reaches the point unshadowed).
 vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float visibility) {
     bool casts = objectCasts(id);
+    // The plane of V's horizon rule: the geometric normal of the pixel whose visibility is used.
+    vec3 g = vis_pix.x < 0 ? n : geometricNormal(vis_pix);
     vec3 radiance = vec3(0.0);
     float num = 0.0, den = 0.0, plain = 0.0;
     for (int i = 0; i < u_light_count; ++i) {
@@ -60,7 +64,7 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float 
         vec4 layer = vis_pix.x < 0 ? vec4(1.0, 1.0, 1.0, 1.0)
                                    : texelFetch(u_visibility, ivec3(vis_pix, i), 0);
         float v = layer.r;
-        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, n, casts);
+        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, g, casts);
         num += l.radiance.w * e * v;
         den += l.radiance.w * e;
         plain += v;

@@ -5,8 +5,10 @@
 // Every view of a batch shares the light's frame, so the receiver is projected once into that
 // frame and each view costs a few scalar operations and one depth-compare fetch. On an object
 // that casts, a sample below the receiver's tangent plane counts as hidden: the object's own
-// (closed) surface hides it, as `exact`'s rays find, though the normal offset lights it.
+// (closed) surface hides it, as `exact`'s rays find, though the normal offset lights it; the
+// plane is the drawn triangle's (the geometric normal), which is the surface those rays meet.
 #include "common/caster_flags.glsl"
+#include "common/geometric_normal.glsl"
 #include "common/sample_view.glsl"
 
 // The three lookup vectors of every view (SampleView's light_origin, frustum, depth), as a
@@ -72,13 +74,15 @@ void main() {
                    dot(pos.xyz, u_light_forward));
     vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
     bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
+    vec3 g = geometricNormal(pix);
+    vec3 gfl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
     float sum = 0.0, weighted = 0.0, weights = 0.0;
     for (int i = 0; i < u_count; ++i) {
         int k = u_view_base + i;
         float w = u_lookups[3 * k + 2].y;
         // d: receiver to sample; cos_r |d| = n.d, cos_l |d| = the receiver's depth beyond it.
         vec3 d = u_lookups[3 * k].xyz - q0;
-        float lit = casts && dot(nl, d) <= 0.0 ? 0.0 : lookup(i, q);
+        float lit = casts && dot(gfl, d) <= 0.0 ? 0.0 : lookup(i, q);
         float d2 = dot(d, d);
         float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
         sum += w * lit;

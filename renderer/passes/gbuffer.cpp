@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/core/error.h"
+#include "renderer/passes/bindings.h"
 
 namespace penumbra::passes {
 
@@ -24,6 +25,8 @@ GBuffer::GBuffer(int width, int height)
       normal_(gl::createTexture2D(GL_RGBA32F, width, height, "gbuffer normal")),
       albedo_(gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer albedo")),
       id_(gl::createTexture2D(GL_R32I, width, height, "gbuffer id")),
+      geometric_normal_(
+          gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer geometric normal")),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, "gbuffer depth")),
       fbo_(gl::createFramebuffer("gbuffer")),
       program_(gl::buildProgram("gbuffer", {"passes/gbuffer.vert", "passes/gbuffer.frag"})) {
@@ -32,10 +35,11 @@ GBuffer::GBuffer(int width, int height)
     glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT1, normal_.id(), 0);
     glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT2, albedo_.id(), 0);
     glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT3, id_.id(), 0);
+    glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT4, geometric_normal_.id(), 0);
     glNamedFramebufferTexture(f, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
     const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
-                           GL_COLOR_ATTACHMENT3};
-    glNamedFramebufferDrawBuffers(f, 4, bufs);
+                           GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
+    glNamedFramebufferDrawBuffers(f, 5, bufs);
     if (glCheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("gbuffer: framebuffer incomplete");
 }
@@ -49,6 +53,7 @@ void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
     glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(fbo, GL_COLOR, 2, zero);
     glClearNamedFramebufferiv(fbo, GL_COLOR, 3, none);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);  // a no-op where FBO has 4 targets
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glViewport(0, 0, width, height);
@@ -63,6 +68,10 @@ void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
     scene.draw(program, GpuScene::Filter::All);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void GBuffer::bindGeometricNormal() const {
+    glBindTextureUnit(kUnitGeometricNormal, geometric_normal_.id());
 }
 
 void GBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {

@@ -17,7 +17,7 @@ struct CameraMatrices {
 
 CameraMatrices cameraMatrices(const scene::Camera& camera, int width, int height);
 
-// Clears FBO (colour 0-3: position, normal, albedo, id; and depth) and draws SCENE into it with
+// Clears FBO (colour 0-4: position, normal, albedo, id, geometric normal; and depth) and draws SCENE into it with
 // PROGRAM (glsl/passes/gbuffer.*) through VIEW and PROJECTION: the G-buffer passes' one draw.
 void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
                  const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection);
@@ -33,11 +33,15 @@ public:
     const gl::Texture& normal() const { return normal_; }      // RGBA32F: xyz, w = view depth
     const gl::Texture& albedo() const { return albedo_; }      // RGBA16F linear
     const gl::Texture& id() const { return id_; }              // R32I, -1 = none
+    // RGBA16F: xyz, the drawn triangle's normal (the horizon rule's plane, as exact's rays see it)
+    const gl::Texture& geometricNormal() const { return geometric_normal_; }
+    // Binds geometricNormal() to its unit (common/geometric_normal.glsl) for the next draws.
+    void bindGeometricNormal() const;
     const gl::Texture& depth() const { return depth_; }        // DEPTH32F (hardware depth)
 
 private:
     int width_, height_;
-    gl::Texture position_, normal_, albedo_, id_, depth_;
+    gl::Texture position_, normal_, albedo_, id_, geometric_normal_, depth_;
     gl::Framebuffer fbo_;
     gl::Program program_;
 };

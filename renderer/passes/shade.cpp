@@ -68,6 +68,7 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glBindTextureUnit(2, gbuffer.albedo().id());
     glBindTextureUnit(3, visibility_layers.id());
     glBindTextureUnit(4, gbuffer.id().id());
+    gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     gl::setUniform(program_, "u_light_count", static_cast<int>(lights.size()));
     gl::setUniform(program_, "u_env_layer", env_layer);
@@ -96,6 +97,7 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     glBindTextureUnit(6, samples.normal().id());
     glBindTextureUnit(7, samples.albedo().id());
     glBindTextureUnit(8, samples.id().id());
+    gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     // 1. Stencil 1 where a sample differs from the representative (colour untouched).
     const GLint zero = 0;

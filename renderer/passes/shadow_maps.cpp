@@ -156,6 +156,7 @@ void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batc
     glBindTextureUnit(1, gbuffer.normal().id());
     glBindTextureUnit(2, batch.depth().id());
     glBindTextureUnit(3, gbuffer.id().id());
+    gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags.id());
     gl::setUniform(program_, "u_view_base", view_base);
     gl::setUniform(program_, "u_count", std::min(count, batch.layers()));

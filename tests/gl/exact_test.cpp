@@ -180,10 +180,13 @@ Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
 // the share above the horizon at grazing points while beauty's (V / share) does not, and
 // their floor errors lie where E is high. Measured for css 1.006x (lone sphere) and 1.024x
 // (default scene) of its visibility error, for bitmask 0.18x and 1.071x (visibility error
-// 0.0118, beauty 0.0126; before it counted that light as visible, 0.0293 and 0.0153); every
-// other technique is strict.
+// 0.0118, beauty 0.0126; before it counted that light as visible, 0.0293 and 0.0153). Since the
+// horizon rule takes the facet's plane (the geometric normal), V's error fell at the objects'
+// terminators while beauty (V / share, the share above the same plane) did not move: on the
+// default scene bitmask's V error 0.0118 -> 0.0103 (beauty 0.0126, 1.22x) and css's 1.077x
+// (V 0.0240, beauty 0.0259). Every other technique is strict.
 double horizonSlack(std::string_view name) {
-    return name == "css" ? 1.05 : name == "bitmask" ? 1.1 : 1.0;
+    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : 1.0;
 }
 
 std::string techniqueJson(std::string_view name) {
@@ -246,7 +249,12 @@ void checkLoneSphere(const std::vector<penumbra::scene::Override>& overrides, co
         }
         EXPECT_LE(std::fabs(sum - sum_exact) / sum_exact, 0.01) << t.name;
         EXPECT_LE(std::fabs(sum - sum_form) / sum_form, 0.01) << t.name;
-        EXPECT_EQ(off, 0) << t.name;
+        // hard's one sample, at the light's centre, is tested against the facet's plane (the
+        // horizon rule's geometric normal, as exact's rays): where the centre lies between that
+        // plane and the smooth one (a band under a pixel wide at the terminator), its beauty is
+        // 0 while exact sees part of the light (measured 2 of 3074 pixels); the others sample
+        // the light finely enough.
+        EXPECT_LE(off, t.name == "hard" ? n / 1000 : 0) << t.name;
     }
 }
 

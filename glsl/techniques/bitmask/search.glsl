@@ -6,6 +6,8 @@
 #define CLASS_PENUMBRA 1
 #define CLASS_UMBRA 2
 
+#include "common/geometric_normal.glsl"
+
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2D u_normal;
 layout(binding = 2) uniform isampler2D u_id;
@@ -51,9 +53,12 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     vec3 d = pos.xyz - u_light_centre;
     float z = dot(d, u_light_forward);
     if (z <= 0.0) return false;
-    vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
-    vec2 e = 2.0 * u_light_half * nl.xy;
-    if (role.y > 0.5) horizon = vec3(-dot(d, n) - 0.5 * (e.x + e.y), e);
+    if (role.y > 0.5) {
+        // The plane of the drawn triangle: the surface that hides the light from itself.
+        vec3 g = geometricNormal(pix);
+        vec2 e = 2.0 * u_light_half * vec2(dot(g, u_light_right), dot(g, u_light_up));
+        horizon = vec3(-dot(d, g) - 0.5 * (e.x + e.y), e);
+    }
     // The surface's depth step per lateral step, sin / cos^2 of the angle between its normal and
     // the direction to the light's centre, is what the offset along the normal must make up.
     float c = clamp(-dot(n, normalize(d)), 0.05, 1.0);

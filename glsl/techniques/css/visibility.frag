@@ -24,13 +24,13 @@
 #define SEARCH_STEPS 0
 #endif
 #include "common/caster_flags.glsl"
+#include "common/geometric_normal.glsl"
 #include "common/light_horizon.glsl"
 #include "techniques/css/basis_layout.glsl"
 
 in vec2 v_uv;
 layout(binding = 0) uniform sampler2D u_position;
 layout(binding = 1) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
-layout(binding = 2) uniform sampler2D u_normal;
 layout(binding = 3) uniform sampler2DArray u_basis_search;  // u_basis, bilinear in one level
 layout(binding = 4) uniform isampler2D u_id;                // the G-buffer's object ids
 
@@ -164,7 +164,7 @@ void main() {
     vec3 dl = pos.xyz - u_light_centre;
     float zw = dot(dl, u_light_forward);
     float horizon = objectCasts(texelFetch(u_id, pix, 0).r)
-                        ? aboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz))
+                        ? aboveHorizon(pos.xyz, geometricNormal(pix))
                         : 1.0;
     o_visibility = vec4(horizon, 0.0, 0.0, 0.0);
     if (zw <= u_near || horizon == 0.0) return;  // nearer than every caster, or facing away

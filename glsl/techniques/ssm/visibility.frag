@@ -11,6 +11,7 @@
 #define TWO_SIDED 0
 #endif
 #include "common/caster_flags.glsl"
+#include "common/geometric_normal.glsl"
 #include "common/light_horizon.glsl"
 
 in vec2 v_uv;
@@ -22,7 +23,6 @@ layout(binding = 3) uniform sampler2DArray u_ssm;  // one layer per receiver lay
 layout(binding = 4) uniform sampler2DArray u_ssm_back;
 #endif
 layout(binding = 5) uniform sampler2DArray u_layers;  // receiver depth per layer, 1 = none
-layout(binding = 6) uniform sampler2D u_normal;
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
 uniform vec3 u_light_up;
@@ -119,7 +119,7 @@ void main() {
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
         float dp = (z - u_near) / u_range;
         if (!layeredOcclusion(uv, dp, tol, occlusion, layer)) {
-            vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+            vec3 n = geometricNormal(pix);
             int nearest = -1;
             float nearest_diff = 2.0;
             ivec2 res = textureSize(u_layers, 0).xy;
@@ -147,7 +147,7 @@ void main() {
         // An object's patches never shadow the surface they lie on (splat.vert): the light's
         // part below that surface's horizon, which the object itself hides, is taken here, in
         // closed form, as css does; the other casters' occlusion falls on the rest alike.
-        v *= shareAboveHorizon(pos.xyz, normalize(texelFetch(u_normal, pix, 0).xyz));
+        v *= shareAboveHorizon(pos.xyz, geometricNormal(pix));
     }
     o_visibility = vec4(v, 0.0, 0.0, 0.0);
     o_occlusion = vec4(1.0 - v, 0.0, 0.0, 0.0);

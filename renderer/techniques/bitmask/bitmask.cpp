@@ -202,6 +202,7 @@ private:
         glBindTextureUnit(0, ctx.gbuffer.position().id());
         glBindTextureUnit(1, ctx.gbuffer.normal().id());
         glBindTextureUnit(2, ctx.gbuffer.id().id());
+        ctx.gbuffer.bindGeometricNormal();
         glBindTextureUnit(3, receives_.id());
         glBindTextureUnit(4, ranges_->hsm().id());
         if (accel_ != Accel::Hsm) glBindTextureUnit(5, ranges_->mssm().id());

@@ -89,7 +89,7 @@ private:
         glUseProgram(p.id());
         glBindTextureUnit(0, ctx.gbuffer.position().id());
         glBindTextureUnit(1, maps_->filtered(filter).id());
-        glBindTextureUnit(2, ctx.gbuffer.normal().id());
+        ctx.gbuffer.bindGeometricNormal();
         glBindTextureUnit(3, maps_->filtered(filter).id());  // through the search sampler
         glBindSampler(3, maps_->searchSampler().id());
         glBindTextureUnit(4, ctx.gbuffer.id().id());

@@ -336,7 +336,7 @@ private:
         glBindTextureUnit(3, soft_maps_[0]->occlusion.id());
         if (two_sided_) glBindTextureUnit(4, soft_maps_[1]->occlusion.id());
         glBindTextureUnit(5, receiver_layers_->depth.id());
-        glBindTextureUnit(6, ctx.gbuffer.normal().id());
+        ctx.gbuffer.bindGeometricNormal();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
                          ctx.gpu.casterFlags().id());
         passes::setLightFrameUniforms(p, light);
