@@ -6,6 +6,9 @@ set -euo pipefail
 DATA="$PENUMBRA_SOURCE_DIR/tests/data/cli"
 WORK=$(mktemp -d "${PENUMBRA_TEST_TMP:-/tmp}/cli.XXXXXX" 2>/dev/null || mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
+# penumbra sweep's shared reference cache ($XDG_CACHE_HOME/penumbra/references): per test, never
+# the user's.
+export XDG_CACHE_HOME="$WORK/xdg-cache"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
