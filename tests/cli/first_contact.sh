@@ -48,7 +48,7 @@ cd ..
 [ "$("$PENUMBRA" render "$scene" -f1-2 --list-frames | tr '\n' ' ')" = "1 2 " ] || fail "-f1-2 (attached value)"
 
 # --version and --help everywhere; scripts answer --help without doing their work.
-for cmd in render compare techniques info sweep fit-lights; do
+for cmd in render compare techniques info sweep fit-lights contact-sheet; do
     [[ "$("$PENUMBRA" "$cmd" --version)" == "penumbra "[0-9]* ]] || fail "$cmd --version"
 done
 for s in setup build demo sequence; do
