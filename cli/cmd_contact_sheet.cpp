@@ -25,7 +25,7 @@ is scaled to fit its tile, keeping its aspect (images of different sizes are fin
                         a run of # becomes the zero-padded frame (out/walk.####.exr)
   -f, --frames SPEC     the frames of each pattern: 7, 1-24, 1-24:4, 1-3,5
   --sweep DIR           the runs of a `penumbra sweep` folder in DIR/sweep.json's order,
-                        labelled by technique and varied values (hard pcf=3 size=[1,1])
+                        labelled by varied values and technique (pcf=3 size=[1,1] hard)
   -o, --output SHEET    the sheet: .png, .exr (display-encoded RGB) or .jpg (required)
   --columns N           columns (default: ceil(sqrt(images)), a near-square grid)
   --tile WxH            the size each image is scaled to fit (default: the first image's)

@@ -49,18 +49,38 @@ std::string shortValue(const std::string& key, const json& value) {
     return name + "=" + (value.is_string() ? value.get_ref<const std::string&>() : value.dump());
 }
 
-std::string runLabel(const json& run) {
-    const auto technique = run.find("technique");
-    std::string label = technique != run.end() && technique->is_string()
-                            ? technique->get_ref<const std::string&>()
-                            : std::string();
-    if (run.contains("values") && run["values"].is_object())
-        for (const auto& [key, value] : run["values"].items()) {
-            if (key == "technique" || key == "technique.name") continue;  // shown first
-            if (!label.empty()) label += ' ';
-            label += shortValue(key, value);
+std::string techniqueOf(const json& run) {
+    const auto t = run.find("technique");
+    return t != run.end() && t->is_string() ? t->get_ref<const std::string&>() : std::string();
+}
+
+// RUN's varied values in KEYS' order (the --vary order), then its technique: the part a
+// shortened label loses first.
+std::string runLabel(const json& run, const std::vector<std::string>& keys) {
+    std::string label;
+    const auto values = run.find("values");
+    if (values != run.end() && values->is_object())
+        for (const auto& key : keys) {
+            const auto value = values->find(key);
+            if (value == values->end() || key == "technique" || key == "technique.name") continue;
+            label += shortValue(key, *value) + ' ';
         }
-    return label;
+    return label + techniqueOf(run);
+}
+
+// The varied keys in --vary order: sweep.json's `varied`, else the first run's own.
+std::vector<std::string> variedKeys(const json& sweep) {
+    std::vector<std::string> keys;
+    const auto varied = sweep.find("varied");
+    if (varied != sweep.end() && varied->is_array())
+        for (const auto& axis : *varied)
+            if (axis.is_object() && axis.contains("key") && axis["key"].is_string())
+                keys.push_back(axis["key"].get_ref<const std::string&>());
+    const json& runs = sweep["runs"];
+    if (keys.empty() && !runs.empty() && runs[0].is_object() && runs[0].contains("values") &&
+        runs[0]["values"].is_object())
+        for (const auto& [key, value] : runs[0]["values"].items()) keys.push_back(key);
+    return keys;
 }
 
 // CHANNEL of IMAGE as grey (see readSheetPicture).
@@ -141,6 +161,7 @@ std::vector<SheetInput> sweepInputs(const fs::path& dir) {
     if (!sweep.is_object() || sweep.value("schema", json()) != "penumbra-sweep" ||
         !sweep.contains("runs") || !sweep["runs"].is_array())
         throw InputError(label + ": not a penumbra sweep (schema penumbra-sweep with runs)");
+    const std::vector<std::string> keys = variedKeys(sweep);
     std::vector<SheetInput> inputs;
     for (const auto& run : sweep["runs"]) {
         const json exr = run.is_object() ? run.value("exr", json()) : json();
@@ -150,7 +171,7 @@ std::vector<SheetInput> sweepInputs(const fs::path& dir) {
             throw InputError(label + ": run " + std::to_string(inputs.size() + 1) +
                              ": `exr` must name a file inside the sweep folder");
         requireImageFile(dir / rel, (dir / rel).string());
-        inputs.push_back({dir / rel, runLabel(run)});
+        inputs.push_back({dir / rel, runLabel(run, keys)});
     }
     if (inputs.empty()) throw InputError(label + ": the sweep lists no runs");
     return inputs;

@@ -23,8 +23,9 @@ struct SheetInput {
 std::vector<SheetInput> fileInputs(const std::vector<std::string>& files,
                                    const std::optional<std::vector<int>>& frames);
 
-// The runs of the sweep folder DIR in DIR/sweep.json's order, labelled "TECHNIQUE key=value
-// ..." with each varied key's last part (technique.pcf=3 -> pcf=3). Throws InputError naming
+// The runs of the sweep folder DIR in DIR/sweep.json's order, labelled "key=value ...
+// TECHNIQUE", the keys in --vary order, each shortened to its last part (technique.pcf=3 ->
+// pcf=3). Throws InputError naming
 // --sweep for a folder without a readable sweep.json, or a run EXR outside DIR or missing.
 std::vector<SheetInput> sweepInputs(const std::filesystem::path& dir);
 
