@@ -250,9 +250,10 @@ int runSweepJob(const SweepRequest& req) {
     sweep.progress = !req.quiet && isatty(STDERR_FILENO);
     std::error_code ec;
     fs::create_directories(cacheFolder(req), ec);
-    if (ec)
-        throw RuntimeError((req.cache.empty() ? "" : "--cache: ") + cacheFolder(req).string() +
-                           ": cannot create folder: " + ec.message());
+    if (ec && !req.cache.empty())  // before anything renders: bad input, exit 2
+        throw InputError("--cache: " + req.cache.string() + ": cannot create folder: " +
+                         ec.message() + " (--cache none keeps references in DIR/cache)");
+    if (ec) throw RuntimeError(req.out.string() + ": cannot create folder: " + ec.message());
     fs::create_directories(req.out / "runs", ec);
     if (ec) throw RuntimeError(req.out.string() + ": cannot create folder: " + ec.message());
     renderReferences(sweep);                 // 2.

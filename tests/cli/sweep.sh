@@ -85,6 +85,9 @@ wait "$p6" || { cat log6.txt; fail "concurrent sweep 2"; }
 ref=$(ls mine/reference-*.exr)
 "$PENUMBRA" compare "$ref" "$ref" >/dev/null || fail "the cached reference does not read back"
 expect_exit 2 "--cache: empty" -- "$PENUMBRA" "${one[@]}" -o bad --cache ''
+touch a-file
+expect_exit 2 "^penumbra: --cache: a-file/sub: cannot create folder" -- \
+    "$PENUMBRA" "${one[@]}" -o bad --cache a-file/sub
 
 # Bad input: exit 2, nothing created.
 expect_exit 2 "--vary technique.pcf=1:5:0" -- "$PENUMBRA" sweep "$scene" --vary technique.pcf=1:5:0 -o bad
