@@ -51,7 +51,7 @@ cd ..
 for cmd in render compare techniques info sweep fit-lights contact-sheet; do
     [[ "$("$PENUMBRA" "$cmd" --version)" == "penumbra "[0-9]* ]] || fail "$cmd --version"
 done
-for s in setup build demo sequence; do
+for s in setup build demo sequence video; do
     [[ "$("$PENUMBRA_SOURCE_DIR/scripts/$s" --help)" == "usage: scripts/$s"* ]] || fail "scripts/$s --help"
 done
 expect_exit 2 "unknown flavour 'fast'" -- "$PENUMBRA_SOURCE_DIR/scripts/build" fast
