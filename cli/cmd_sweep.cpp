@@ -14,8 +14,8 @@ constexpr const char* kHelp =
     R"(usage: penumbra sweep SCENE.json --vary KEY=VALUES [--vary ...] -o DIR [options]
 
 Renders the cartesian product of the varied values with one technique, compares every run
-with a reference (rendered once per distinct setting that changes the image, cached in
-DIR/cache by a hash of everything that determines it), and writes DIR/sweep.csv,
+with a reference (rendered once per distinct setting that changes the image, cached by a hash
+of everything that determines it in a cache shared by sweeps), and writes DIR/sweep.csv,
 DIR/sweep.json, each run's EXR, preview and error heatmap (DIR/runs/), and the report
 DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished runs.
 
@@ -32,6 +32,9 @@ DIR/index.html with its plots (scripts/sweep-report). A rerun reuses finished ru
   --warmup N, --repeat N   timing: untimed renders, then the median of N (default 1, 3;
                            at most 100 each)
   -o, --output DIR         where everything goes (required)
+  --cache DIR              where references are cached, shared by sweeps (default
+                           $XDG_CACHE_HOME/penumbra/references, else
+                           ~/.cache/penumbra/references); `--cache none`: DIR/cache
   -j, --jobs N             render the runs as N parallel processes through GNU parallel
                            (timings then compete for the machine: compare them with care)
   --no-report              skip the plots and index.html
@@ -56,7 +59,7 @@ int runSweep(const Args& args) {
     ArgCursor c("sweep", args);
     app::SweepRequest req;
     req.reference_sets.push_back({"technique.samples", "32"});
-    std::optional<std::string> scene, out;
+    std::optional<std::string> scene, out, cache;
     while (!c.done()) {
         if (c.flag("-h", "--help")) {
             std::fputs(kHelp, stdout);
@@ -79,6 +82,9 @@ int runSweep(const Args& args) {
         } else if ((v = c.option("-o", "--output"))) {
             if (v->empty()) c.fail("--output: empty folder name");
             out = *v;
+        } else if ((v = c.option("", "--cache"))) {
+            if (v->empty()) c.fail("--cache: empty folder name (`--cache none`: DIR/cache)");
+            cache = *v;
         } else if ((v = c.option("-j", "--jobs"))) {
             req.jobs = parseInt(c, "--jobs", *v, 1, 256);
         } else if ((v = c.option("", "--run-index"))) {
@@ -100,6 +106,10 @@ int runSweep(const Args& args) {
     if (req.axes.empty()) c.fail("nothing to vary: give at least one --vary KEY=VALUES");
     req.scene = *scene;
     req.out = *out;
+    if (!cache)
+        req.cache = app::sweepCacheDefault();
+    else if (*cache != "none")
+        req.cache = *cache;
     // The arguments of each parallel job: these, less --jobs.
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "-j" || args[i] == "--jobs") {

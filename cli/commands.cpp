@@ -17,6 +17,8 @@ constexpr Command kCommands[] = {
      "error and time over a cartesian product of values", runSweep},
     {"fit-lights", "fit-lights ENV.exr [options]",
      "fit area lights to an environment map (JSON + picture)", runFitLights},
+    {"contact-sheet", "contact-sheet IMAGE... -o SHEET.png",
+     "a labelled grid of images, frames or a sweep's runs", runContactSheet},
 };
 
 }  // namespace

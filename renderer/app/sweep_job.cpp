@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <regex>
@@ -38,7 +39,7 @@ struct Sweep {
     const SweepRequest& req;
     SweepPlan plan;
     std::unique_ptr<gl::Context> context;
-    std::vector<fs::path> ref_paths;  // cache/reference-<hash>.exr per reference
+    std::vector<fs::path> ref_paths;  // <cache>/reference-<hash>.exr per reference
     int rendered_refs = 0, rendered_runs = 0, rendered_by_jobs = 0, failed = 0;
     bool progress = false;  // progress lines only on a terminal
 
@@ -54,7 +55,8 @@ struct Sweep {
 struct Rendered {
     output::Image image;
     json passes = json::object();  // grouped medians: "shadow_maps[3]@1" -> "shadow_maps"
-    double total_ms = 0;
+    double total_ms = 0;           // the median over --repeat
+    double total_min_ms = 0, total_max_ms = 0;  // its spread
     json stats;
 };
 
@@ -84,11 +86,27 @@ Rendered render(const SweepRender& job, Sweep& sweep, frame::FrameRuns runs) {
     }
     Rendered out;
     for (const auto& [k, v] : grouped) out.passes[k] = output::summarize(v).median;
-    out.total_ms = output::summarize(totals).median;
+    const output::Summary total = output::summarize(totals);
+    out.total_ms = total.median;
+    out.total_min_ms = total.min;
+    out.total_max_ms = total.max;
     out.stats = std::move(frame.stats);
     out.image = std::move(frame.image);
     out.image.attributes.emplace_back("penumbra/scene", req.scene.string());
     return out;
+}
+
+// Where the references are: the shared cache (--cache), else the sweep's own DIR/cache.
+fs::path cacheFolder(const SweepRequest& req) {
+    return req.cache.empty() ? req.out / "cache" : req.cache;
+}
+
+// A reference's path as a run entry records it: relative to DIR inside it, else absolute.
+std::string referenceEntry(const SweepRequest& req, const fs::path& path) {
+    if (req.cache.empty()) return fs::relative(path, req.out).string();
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(path, ec);
+    return ec ? path.string() : absolute.lexically_normal().string();
 }
 
 // Number of run records (runs/run-NNNN.json) of the sweep that exist.
@@ -118,11 +136,14 @@ void renderReferences(Sweep& sweep) {
     }
     const auto& references = sweep.plan.references;
     for (size_t i = 0; i < references.size(); ++i) {
-        fs::path path = req.out / "cache" / ("reference-" + references[i].hash + ".exr");
+        fs::path path = cacheFolder(req) / ("reference-" + references[i].hash + ".exr");
         sweep.ref_paths.push_back(path);
         const bool needed = !req.run_index ||
                             sweep.plan.run_reference[static_cast<size_t>(*req.run_index - 1)] == i;
         if (!needed || output::isReadableExr(path)) continue;  // a truncated one is redone
+        // Another sweep may be rendering it too: each writes its own temporary and renames it
+        // (same pixels), so the last rename wins and no reader sees a partial file.
+        removeStaleTemporaries(path);
         if (sweep.progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());
@@ -161,7 +182,7 @@ json renderRun(Sweep& sweep, size_t i, const std::string& id, const json& values
     output::Image ref = output::readExr(ref_path);
     auto result = output::compareImages(ref, r.image, compare);
     output::writeErrorHeatmap(req.out / (base + ".error.png"), ref, r.image, "visibility",
-                              kHeatmapFullScale);
+                              kHeatmapFullScale);  // with its colour bar: 0 to the scale
     json entry = {{"id", id},
                   {"values", values},
                   {"technique", run.technique_name},
@@ -169,8 +190,13 @@ json renderRun(Sweep& sweep, size_t i, const std::string& id, const json& values
                   {"exr", base + ".exr"},
                   {"preview", base + ".png"},
                   {"heatmap", base + ".error.png"},
-                  {"reference", fs::relative(ref_path, req.out).string()},
-                  {"time_ms", {{"total", r.total_ms}, {"passes", r.passes}}},
+                  {"heatmap_scale", kHeatmapFullScale},
+                  {"reference", referenceEntry(req, ref_path)},
+                  {"time_ms",
+                   {{"total", r.total_ms},
+                    {"total_min", r.total_min_ms},
+                    {"total_max", r.total_max_ms},
+                    {"passes", r.passes}}},
                   {"metrics", metricsJson(result)},
                   {"stats", r.stats}};
     writeFileAtomically(req.out / "runs" / (id + ".json"), entry.dump(2) + "\n");
@@ -209,12 +235,25 @@ json renderRuns(Sweep& sweep) {
 
 }  // namespace
 
+fs::path sweepCacheDefault() {
+    // XDG Base Directory: a relative $XDG_CACHE_HOME is ignored.
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')
+        return fs::path(xdg) / "penumbra" / "references";
+    if (const char* home = std::getenv("HOME"); home && *home == '/')
+        return fs::path(home) / ".cache" / "penumbra" / "references";
+    return {};
+}
+
 int runSweepJob(const SweepRequest& req) {
     // 1. Every run and every reference, validated before anything renders.
     Sweep sweep{req, planSweep(req)};
     sweep.progress = !req.quiet && isatty(STDERR_FILENO);
     std::error_code ec;
-    fs::create_directories(req.out / "cache", ec);
+    fs::create_directories(cacheFolder(req), ec);
+    if (ec && !req.cache.empty())  // before anything renders: bad input, exit 2
+        throw InputError("--cache: " + req.cache.string() + ": cannot create folder: " +
+                         ec.message() + " (--cache none keeps references in DIR/cache)");
+    if (ec) throw RuntimeError(req.out.string() + ": cannot create folder: " + ec.message());
     fs::create_directories(req.out / "runs", ec);
     if (ec) throw RuntimeError(req.out.string() + ": cannot create folder: " + ec.message());
     renderReferences(sweep);                 // 2.

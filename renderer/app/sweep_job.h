@@ -24,6 +24,9 @@ struct SweepRequest {
     std::vector<scene::Override> reference_sets;  // --reference-set, after the defaults
     int frame = 0;
     std::filesystem::path out;  // -o DIR
+    // --cache DIR: where references are kept, shared by sweeps (sweepCacheDefault()); empty
+    // for DIR/cache, the sweep's own (--cache none).
+    std::filesystem::path cache;
     gl::ContextRequest gl;
     frame::FrameRuns runs{1, 3};  // --warmup, --repeat
     bool quiet = false;
@@ -35,6 +38,10 @@ struct SweepRequest {
     std::vector<std::string> job_args;
     std::optional<int> run_index;  // --run-index K (1-based): render run K only, no tables
 };
+
+// The reference cache shared by sweeps: $XDG_CACHE_HOME/penumbra/references, else
+// $HOME/.cache/penumbra/references; empty (the sweep's own DIR/cache) when neither is set.
+std::filesystem::path sweepCacheDefault();
 
 // Returns 0, or 1 when a run or the report failed. Throws InputError for bad input (before any
 // rendering) and BackendError.

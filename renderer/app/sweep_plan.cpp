@@ -1,6 +1,7 @@
 // The sweep's runs and references: see sweep_plan.h.
 #include "renderer/app/sweep_plan.h"
 
+#include <filesystem>
 #include <map>
 
 #include "penumbra/version.h"
@@ -16,7 +17,9 @@ namespace {
 constexpr size_t kMaxRuns = 2000;
 
 // Loads and validates RENDER's scene (exit 2 on bad input) and fills its hash and technique.
-void validate(SweepRender& render, const SweepRequest& req) {
+// A reference's hash also holds the scene's folder: references are cached across sweeps
+// (--cache), and two scenes of one text in two folders may name different asset files.
+void validate(SweepRender& render, const SweepRequest& req, bool reference) {
     scene::LoadOptions options;
     options.technique = render.technique;
     auto source = scene::SceneSource::load(req.scene, render.overrides, options);
@@ -31,8 +34,15 @@ void validate(SweepRender& render, const SweepRequest& req) {
     checkMemoryBudget(s, render.technique_name,
                       resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
                       nullptr);
-    render.hash = contentHash(source.document().dump() + "|frame " + std::to_string(req.frame) +
-                              "|" + PENUMBRA_VERSION);
+    std::string key =
+        source.document().dump() + "|frame " + std::to_string(req.frame) + "|" + PENUMBRA_VERSION;
+    if (reference) {
+        std::error_code ec;
+        const auto folder = std::filesystem::weakly_canonical(
+            std::filesystem::absolute(req.scene, ec).parent_path(), ec);
+        key += "|folder " + folder.string();
+    }
+    render.hash = contentHash(key);
 }
 
 // Technique parameters (varied, or fixed by -D) belong to the technique under test, not to the
@@ -59,8 +69,8 @@ SweepPlan planSweep(const SweepRequest& req) {
         }
         ref.overrides.insert(ref.overrides.end(), req.reference_sets.begin(),
                              req.reference_sets.end());
-        validate(run, req);
-        validate(ref, req);
+        validate(run, req, false);
+        validate(ref, req, true);
         auto [it, inserted] = reference_of_hash.emplace(ref.hash, plan.references.size());
         if (inserted) plan.references.push_back(ref);
         plan.run_reference.push_back(it->second);

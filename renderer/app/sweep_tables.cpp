@@ -68,7 +68,7 @@ std::string toCsv(const json& sweep) {
     std::ostringstream out;
     out << "id,technique";
     for (const auto& k : keys) out << "," << csvCell(k);
-    out << ",total_ms";
+    out << ",total_ms,total_ms_min,total_ms_max";
     for (const auto& p : passes) out << "," << csvCell(p + "_ms");
     for (const auto& m : metrics) out << "," << m;
     for (const auto& s : stats) out << "," << csvCell(s);
@@ -76,7 +76,8 @@ std::string toCsv(const json& sweep) {
     for (const auto& r : sweep["runs"]) {
         out << csvCell(r["id"]) << "," << csvCell(r["technique"]);
         for (const auto& k : keys) out << "," << csvCell(r["values"][k]);
-        out << "," << r["time_ms"]["total"].dump();
+        for (const char* k : {"total", "total_min", "total_max"})
+            out << "," << r["time_ms"].value(k, json(nullptr)).dump();
         for (const auto& p : passes)
             out << "," << r["time_ms"]["passes"].value(p, json(nullptr)).dump();
         for (const auto& m : metrics) out << "," << r["metrics"].value(m, json(nullptr)).dump();

@@ -29,6 +29,25 @@ void heatColour(float t, unsigned char rgb[3]) {
     }
 }
 
+namespace {
+
+// Appends the colour bar under an RGB8 picture of WIDTH x HEIGHT (RGB): colourBarRows(HEIGHT)
+// rows, 2 dark ones, then the ramp from 0 (left) to the full scale (right). Returns the rows
+// of the whole picture.
+int appendColourBar(std::vector<unsigned char>& rgb, int width, int height) {
+    const size_t w = static_cast<size_t>(width);
+    const size_t n = w * static_cast<size_t>(height);
+    const int bar = colourBarRows(height);
+    rgb.resize((n + w * static_cast<size_t>(bar)) * 3, 20);
+    for (int row = 2; row < bar; ++row)
+        for (size_t x = 0; x < w; ++x)
+            heatColour(w > 1 ? static_cast<float>(x) / static_cast<float>(w - 1) : 1.0f,
+                       &rgb[(n + static_cast<size_t>(row) * w + x) * 3]);
+    return height + bar;
+}
+
+}  // namespace
+
 void writeErrorHeatmap(const std::filesystem::path& path, const Image& ref, const Image& test,
                        const std::string& channel, float full_scale) {
     const ImageChannel* r = ref.find(channel);
@@ -47,7 +66,7 @@ void writeErrorHeatmap(const std::filesystem::path& path, const Image& ref, cons
         }
         heatColour(std::fabs(r->pixels[i] - t->pixels[i]) / full_scale, px);
     }
-    writePngRgb8(path, ref.width, ref.height, rgb);
+    writePngRgb8(path, ref.width, appendColourBar(rgb, ref.width, ref.height), rgb);
 }
 
 int colourBarRows(int height) {
@@ -65,20 +84,14 @@ float defaultDifferenceScale(const Image& diff) {
 void writeDifferenceHeatmap(const std::filesystem::path& path, const Image& diff, float scale) {
     if (diff.width <= 0 || diff.height <= 0 || diff.channels.empty() || !(scale > 0.0f))
         throw RuntimeError(path.string() + ": nothing to draw (empty difference or scale <= 0)");
-    const size_t w = static_cast<size_t>(diff.width);
-    const size_t n = w * static_cast<size_t>(diff.height);
-    const int bar = colourBarRows(diff.height);
-    std::vector<unsigned char> rgb((n + w * static_cast<size_t>(bar)) * 3, 20);
+    const size_t n = static_cast<size_t>(diff.width) * static_cast<size_t>(diff.height);
+    std::vector<unsigned char> rgb(n * 3);
     for (size_t i = 0; i < n; ++i) {
         float m = 0.0f;
         for (const auto& c : diff.channels) m = std::max(m, c.pixels[i]);  // inf stays inf
         heatColour(std::isnan(m) ? 1.0f : m / scale, &rgb[i * 3]);
     }
-    for (int row = 2; row < bar; ++row)
-        for (size_t x = 0; x < w; ++x)
-            heatColour(w > 1 ? static_cast<float>(x) / static_cast<float>(w - 1) : 1.0f,
-                       &rgb[(n + static_cast<size_t>(row) * w + x) * 3]);
-    writePngRgb8(path, diff.width, diff.height + bar, rgb);
+    writePngRgb8(path, diff.width, appendColourBar(rgb, diff.width, diff.height), rgb);
 }
 
 }  // namespace penumbra::output

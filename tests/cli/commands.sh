@@ -1,6 +1,6 @@
 # Every command answers --help; techniques and info print text and valid JSON.
 source "$(dirname "$0")/lib.sh"
-for cmd in render compare techniques info; do
+for cmd in render compare techniques info contact-sheet; do
     "$PENUMBRA" "$cmd" --help | grep -q "usage: penumbra $cmd" || fail "$cmd --help"
 done
 "$PENUMBRA" --help | grep -q "usage: penumbra" || fail "penumbra --help"

@@ -48,10 +48,10 @@ cd ..
 [ "$("$PENUMBRA" render "$scene" -f1-2 --list-frames | tr '\n' ' ')" = "1 2 " ] || fail "-f1-2 (attached value)"
 
 # --version and --help everywhere; scripts answer --help without doing their work.
-for cmd in render compare techniques info sweep fit-lights; do
+for cmd in render compare techniques info sweep fit-lights contact-sheet; do
     [[ "$("$PENUMBRA" "$cmd" --version)" == "penumbra "[0-9]* ]] || fail "$cmd --version"
 done
-for s in setup build demo sequence; do
+for s in setup build demo sequence video; do
     [[ "$("$PENUMBRA_SOURCE_DIR/scripts/$s" --help)" == "usage: scripts/$s"* ]] || fail "scripts/$s --help"
 done
 expect_exit 2 "unknown flavour 'fast'" -- "$PENUMBRA_SOURCE_DIR/scripts/build" fast

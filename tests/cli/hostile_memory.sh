@@ -1,6 +1,7 @@
 # Allocations estimated before they are made: a render over the memory limit or a texture over
 # llvmpipe's 2 GiB is refused naming the key (exit 2), as are ssm's splat work and images or
-# accessors whose headers declare more than their files hold (fit-lights, compare, glTF).
+# accessors whose headers declare more than their files hold (fit-lights, compare,
+# contact-sheet, glTF).
 source "$(dirname "$0")/lib.sh"
 cd "$WORK"
 FUZZ="$PENUMBRA_SOURCE_DIR/tests/data/fuzz"
@@ -43,6 +44,16 @@ expect_exit 4 "huge_window.exr: .*Unexpected data block" -- \
     "$PENUMBRA" compare "$FUZZ/exr/huge_window.exr" "$FUZZ/exr/huge_window.exr"
 kb=$(peak "$PENUMBRA" fit-lights "$FUZZ/exr/huge_window.exr")
 [ "$kb" -lt 600000 ] || fail "fit-lights on huge_window.exr peaked at $kb KB"
+kb=$(peak "$PENUMBRA" contact-sheet "$FUZZ/exr/huge_window.exr" -o s.png)
+[ "$kb" -lt 600000 ] || fail "contact-sheet on huge_window.exr peaked at $kb KB"
+expect_exit 2 "huge_window.exr: .*Unexpected data block" -- \
+    "$PENUMBRA" contact-sheet "$FUZZ/exr/huge_window.exr" -o s.png
+# contact-sheet: a sheet over the limit is refused before it is drawn.
+render --size 64x48 --quiet
+expect_exit 2 "^penumbra: -o: s.png: the 16432x8224 sheet needs about 2.3 GiB, more than the memory limit of 1.0 GiB" -- \
+    "$PENUMBRA" contact-sheet out.exr out.exr --tile 8192x8192 --no-labels --memory-limit 1G -o s.png
+[ ! -e s.png ] || fail "contact-sheet wrote s.png"
+rm out.exr out.json
 
 # gltf_count_without_data: 231 bytes declaring 60M vertices took 3.4 GB and 18 s, exit 0.
 for f in count_without_data count_beyond_buffer; do

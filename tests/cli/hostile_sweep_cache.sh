@@ -6,7 +6,7 @@ sweep=("$PENUMBRA" sweep "$DATA/small.json" -t hard --vary technique.pcf=1,3 --s
        --reference-technique reference --reference-set technique.samples=2 --warmup 0 --repeat 1
        --no-report --quiet -o out)
 "${sweep[@]}" 2>/dev/null || fail "first sweep"
-ref=$(ls out/cache/reference-*.exr)
+ref=$(ls "$XDG_CACHE_HOME"/penumbra/references/reference-*.exr)
 truncate -s 100 "$ref"
 truncate -s 100 out/runs/run-0002.exr
 expect_exit 0 "" -- "${sweep[@]}"

@@ -72,5 +72,35 @@ TEST(Heatmap, PngHoldsTheLargestChannelAndAColourBar) {
     EXPECT_THROW(writeDifferenceHeatmap(dir / "bad.png", d, 0.0f), RuntimeError);
 }
 
+TEST(Heatmap, SweepHeatmapHasTheSameColourBar) {
+    ScratchFolder dir;
+    Image ref, test;
+    for (Image* im : {&ref, &test}) {
+        im->width = 20;
+        im->height = 4;
+        im->add("visibility", PixelType::Float);
+    }
+    test.channels[0].pixels[0] = 0.25f;  // the full scale: white
+    writeErrorHeatmap(dir / "error.png", ref, test, "visibility", 0.25f);
+    auto in = OIIO::ImageInput::open((dir / "error.png").string());
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec& spec = in->spec();
+    ASSERT_EQ(spec.width, 20);
+    ASSERT_EQ(spec.height, 4 + colourBarRows(4));
+    std::vector<unsigned char> px(static_cast<size_t>(spec.width * spec.height * 3));
+    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+    unsigned char white[3], black[3];
+    heatColour(1.0f, white);
+    heatColour(0.0f, black);
+    auto is = [&](int x, int y, const unsigned char* rgb) {
+        const unsigned char* p = &px[static_cast<size_t>((y * spec.width + x) * 3)];
+        return p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
+    };
+    EXPECT_TRUE(is(0, 0, white));
+    EXPECT_TRUE(is(1, 0, black));
+    EXPECT_TRUE(is(0, 4 + 2, black));   // the bar, after 2 dark rows: 0 at the left
+    EXPECT_TRUE(is(19, 4 + 2, white));  // the scale at the right
+}
+
 }  // namespace
 }  // namespace penumbra::output

@@ -1,0 +1,50 @@
+// The contact-sheet job: see contact_sheet_job.h.
+#include "renderer/app/contact_sheet_job.h"
+
+#include <cstdio>
+
+#include "renderer/app/contact_sheet_inputs.h"
+#include "renderer/core/atomic_file.h"
+#include "renderer/core/error.h"
+#include "renderer/core/memory_limit.h"
+
+namespace penumbra::app {
+
+int runContactSheetJob(const ContactSheetRequest& req) {
+    std::vector<SheetInput> inputs = fileInputs(req.files, req.frames);
+    if (req.sweep)
+        for (auto& input : sweepInputs(*req.sweep)) inputs.push_back(std::move(input));
+    if (inputs.empty())
+        throw InputError(
+            "contact-sheet: no images (give files, a pattern with -f, or --sweep DIR)");
+    checkOutputPath(req.out, "-o");
+    const std::string font = req.labels ? output::findLabelFont(req.font) : std::string();
+
+    // The tile: --tile, else the first picture's size; every picture is scaled to fit it.
+    output::DisplayImage first = readSheetPicture(inputs.front(), req.channel);
+    const auto [tile_w, tile_h] = req.tile.value_or(std::pair{first.width, first.height});
+    std::vector<std::string> labels;
+    if (req.labels)
+        for (const auto& input : inputs) labels.push_back(input.label);
+    const output::SheetLayout layout = output::planSheet(static_cast<int>(inputs.size()),
+                                                         req.columns, tile_w, tile_h, labels, font);
+    const std::string size = std::to_string(layout.width()) + "x" + std::to_string(layout.height());
+    if (layout.width() > output::kMaxSheetSide || layout.height() > output::kMaxSheetSide)
+        throw InputError("-o: " + req.out.string() + ": the sheet would be " + size +
+                         ", more than " + std::to_string(output::kMaxSheetSide) +
+                         " pixels a side (--tile, --columns)");
+    requireMemory(layout.bytes(), "-o: " + req.out.string(), "the " + size + " sheet");
+
+    output::ContactSheet sheet(layout);
+    sheet.place(0, first);
+    first = {};
+    for (size_t i = 1; i < inputs.size(); ++i)
+        sheet.place(static_cast<int>(i), readSheetPicture(inputs[i], req.channel));
+    sheet.write(req.out);
+    if (!req.quiet)
+        std::fprintf(stderr, "penumbra: contact-sheet: %zu images, %s: %s\n", inputs.size(),
+                     size.c_str(), req.out.c_str());
+    return 0;
+}
+
+}  // namespace penumbra::app
