@@ -20,9 +20,11 @@ def _box(text, renderer):
     return (b.x0, b.y0, b.x1, b.y1)
 
 
-def place(fig, ax, items, marker_px, fontsize=7):
-    """items: [(x, y, text, colour, run uid)] in priority order. The layout must be final (drawn
-    and frozen). Returns ([(uid, text, box)], [uid left out]); boxes in display pixels."""
+def place(fig, ax, items, marker_px, lines=(), fontsize=7):
+    """items: [(x, y, text, colour, run uid)] in priority order; lines: [(x0, y0, x1, y1)] in
+    data coordinates, horizontal or vertical (error bars, front steps), that labels keep off.
+    The layout must be final (drawn and frozen). Returns ([(uid, text, box)], [uid left out]);
+    boxes in display pixels."""
     renderer = fig.canvas.get_renderer()
     a = ax.get_window_extent(renderer)
     inside = (a.x0, a.y0, a.x1, a.y1)
@@ -31,6 +33,9 @@ def place(fig, ax, items, marker_px, fontsize=7):
     for x, y, *_ in items:
         px, py = ax.transData.transform((x, y))
         markers.append((px - r, py - r, px + r, py + r))
+    for x0, y0, x1, y1 in lines:
+        (ax0, ay0), (ax1, ay1) = ax.transData.transform([(x0, y0), (x1, y1)])
+        markers.append((min(ax0, ax1) - 2, min(ay0, ay1) - 2, max(ax0, ax1) + 2, max(ay0, ay1) + 2))
     placed, left_out = [], []
     for x, y, label, colour, uid in items:
         ann = ax.annotate(label, (x, y), xytext=(0, 0), textcoords="offset points",

@@ -161,7 +161,17 @@ def title(report):
     return f"Penumbra sweeps: {len(report.sweeps)} folders · {', '.join(scenes)}"
 
 
-def write(report, fronts, metric, error_plots, param_plots):
+def heatmap_section(heatmap):
+    if not heatmap:
+        return ""
+    name, keys = heatmap
+    return (f'<h2>Heatmap</h2><div class="plots"><figure><a href="plots/{href(name)}.png">'
+            f'<img src="plots/{href(name)}.png" alt="heatmap over {e(keys[0])} and {e(keys[1])}">'
+            f"</a><figcaption>The Pareto metric over {e(keys[0])} and {e(keys[1])}, one panel per "
+            f"technique and remaining values · {plot_links(name)}</figcaption></figure></div>")
+
+
+def write(report, fronts, metric, error_plots, heatmap, param_plots):
     t = title(report)
     sub = [f"{len(report.runs)} runs", f"Pareto metric: {e(metric)}",
            '<a href="report.json">report.json</a>']
@@ -169,7 +179,7 @@ def write(report, fronts, metric, error_plots, param_plots):
              f"<title>{e(t)}</title>", f"<style>{CSS}</style></head><body>", f"<h1>{e(t)}</h1>",
              f'<p class="sub">{" · ".join(sub)}</p>', settings(report),
              error_section(report, error_plots, metric), fronts_table(report, fronts, metric),
-             params_section(report, param_plots), page_runs.runs_table(report),
+             heatmap_section(heatmap), params_section(report, param_plots), page_runs.runs_table(report),
              f"<script>{JS}</script>", "</body></html>"]
     path = os.path.join(report.out, "index.html")
     with open(path + ".tmp", "w", encoding="utf-8") as f:

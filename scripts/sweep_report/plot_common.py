@@ -17,8 +17,8 @@ def setup():
     plt.rcParams["svg.hashsalt"] = "penumbra-sweep"
 
 
-def figure(width, height):
-    return plt.subplots(figsize=(width, height), dpi=DPI, layout="constrained")
+def figure(width, height, nrows=1, ncols=1):
+    return plt.subplots(nrows, ncols, figsize=(width, height), dpi=DPI, layout="constrained")
 
 
 def save(fig, plots_dir, name):

@@ -108,33 +108,48 @@ def plot(report, group, fronts, metric, plots_dir, name, subtitle):
     fig, ax = figure(10, 6.2)
     draw_points(ax, pts, colouring, marker_of)
     draw_fronts(ax, fronts, colouring, style_of, metric)
-    errs = [p[2] for p in pts]
-    if errs and min(errs) > 0 and max(errs) / min(errs) > 20:
-        ax.set_yscale("log")
+    for values, set_scale in (([p[1] for p in pts], ax.set_xscale), ([p[2] for p in pts], ax.set_yscale)):
+        if values and min(values) > 0 and max(values) / min(values) > 20:
+            set_scale("log")  # times or errors over more than a factor 20: log axis
     keys = label_keys(report, colouring, techniques)
     ax.set_xlabel("total frame time (ms)" + (", bars: min to max of the timed renders"
                                              if any(r.time_range() for r, _, _ in pts) else ""))
     ax.set_ylabel(metric_label(metric))
     ax.set_title(f"Error against time{subtitle}"
                  + (f"\nlabels: {', '.join(keys)}" if keys and pts else ""), fontsize=10)
-    ax.grid(True, alpha=0.3, which="both")
+    ax.grid(True, alpha=0.3)
+    ax.grid(True, which="minor", alpha=0.1)
     if pts:
         add_legend(fig, ax, colouring, techniques, marker_of, style_of)
     else:
         ax.text(0.5, 0.5, "no run has both a time and an error", transform=ax.transAxes,
                 ha="center", va="center")
     freeze_layout(fig)
-    return finish(fig, ax, report, pts, fronts, keys, colouring, plots_dir, name)
+    return finish(fig, ax, pts, fronts, keys, colouring, metric, plots_dir, name)
 
 
-def finish(fig, ax, report, pts, fronts, keys, colouring, plots_dir, name):
+def obstacles(pts, fronts, metric):
+    """The error bars and the fronts' steps, as segments in data coordinates."""
+    out = []
+    for run, t, err in pts:
+        rng = run.time_range()
+        if rng:
+            out.append((rng[0], err, rng[1], err))
+    for f in fronts:
+        steps = [(r.time(), metric_value(r, metric)) for r in f.on_front]
+        for (t0, e0), (t1, e1) in zip(steps, steps[1:]):
+            out += [(t0, e0, t1, e0), (t1, e0, t1, e1)]
+    return out
+
+
+def finish(fig, ax, pts, fronts, keys, colouring, metric, plots_dir, name):
     order = [r for f in fronts for r in f.on_front]
     order += sorted((r for r, _, _ in pts if r not in order), key=lambda r: r.time())
     by_run = {r: (t, err) for r, t, err in pts}
     items = [(*by_run[r], ", ".join(r.value_text(k) for k in keys), colouring.of(r), r.uid)
-             for r in order] if keys else []
-    marker_px = 2 * (MARKER_AREA ** 0.5) * fig.dpi / 72 / 2 + 2
-    placed, left_out = labels.place(fig, ax, items, marker_px)
+             for r in order if any(r.values[k] is not MISSING for k in keys)] if keys else []
+    marker_px = MARKER_AREA ** 0.5 * fig.dpi / 72 + 2  # the marker's width, and a margin
+    placed, left_out = labels.place(fig, ax, items, marker_px, obstacles(pts, fronts, metric))
     height = fig.bbox.height
     points = []
     for r, t, err in pts:
