@@ -24,6 +24,7 @@ def figure(width, height, nrows=1, ncols=1):
 def save(fig, plots_dir, name):
     """Writes NAME.png, .svg and .pdf; returns NAME."""
     fig.savefig(os.path.join(plots_dir, name + ".png"), dpi=DPI)
+    fig.set_layout_engine("none")  # laid out by the PNG's draw: the same layout, done once
     fig.savefig(os.path.join(plots_dir, name + ".svg"), metadata={"Date": None})
     fig.savefig(os.path.join(plots_dir, name + ".pdf"),
                 metadata={"CreationDate": None, "ModDate": None})
