@@ -74,8 +74,8 @@ def assign(report, metric):
     scene_keys = [k for k in report.keys if not is_technique_key(k)]
     fronts = {}
     for run in report.runs:
-        ref = os.path.basename(run.rec.get("reference") or "") if isinstance(
-            run.rec.get("reference"), str) else ""
+        ref = run.path("reference")
+        ref = os.path.basename(ref) if ref else ""
         combo = tuple((k, run.value_text(k)) for k in scene_keys)
         key = (run.sweep.group, ref, combo, run.technique)
         if key not in fronts:

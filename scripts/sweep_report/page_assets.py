@@ -20,7 +20,6 @@ img.thumb { width: 96px; height: auto; display: block; background: #eee; }
 .plots.small img { width: 600px; }
 .plots img.map { max-width: none; }
 .note { color: #555; max-width: 60em; }
-tr.target td { background: #fff6cc; }
 table.runs tr:target td { background: #fff6cc; }
 figcaption { font-size: 12px; color: #555; }
 .missing { color: #a00; font-size: 11px; }

@@ -221,6 +221,10 @@ check_fronts "$dir"
 read -r nfronts nlabels <"$WORK/counts"
 [ "$nfronts" = 4 ] || fail "expected 4 fronts (technique x light size), got $nfronts"
 [ "$nlabels" -ge 16 ] || fail "only $nlabels of 24 points labelled"
+# Every point is a tooltip (an area of the plot's image map) linking to its run's row.
+[ "$(grep -o '<area shape="circle"' "$html" | wc -l)" = 24 ] || fail "expected 24 point tooltips"
+grep -q '<area [^>]*href="#r7" title="run-0007 · hard · technique.pcf=3, lights.0.size=\[1, 1\], technique.bias=0.001 · 59 ms · shadow_mae 0.04819 · front F2 (on it)"' "$html" \
+    || fail "run-0007's tooltip is missing or does not name its values"
 # Time bars: the min-max column where the run has them, "–" where it has not (run-0003).
 grep -q '>37.8–50.4<' "$html" || fail "run-0001's min–max time (37.8–50.4) not in the table"
 grep -q 'id="r3"[^>]*>.*<td class="num" data-sort="[^"]*">47</td><td>–</td>' "$html" \
