@@ -41,11 +41,11 @@ def sweep_rows(report, s):
     overrides = ref.get("overrides") or {}
     rows += [(f"reference: {k}", e(fmt_value(v))) for k, v in overrides.items()] or [
         ("reference overrides", "none")]
-    refs = sorted({r.rec["reference"] for r in report.runs
-                   if r.sweep is s and isinstance(r.rec.get("reference"), str) and r.rec["reference"]})
+    refs = sorted({r.path("reference") for r in report.runs
+                   if r.sweep is s and r.path("reference")})
     if refs:
         rows.append(("reference images", ", ".join(
-            page_runs.file_link(report, os.path.join(s.folder, p), p) for p in refs)))
+            page_runs.file_link(report, p, os.path.relpath(p, s.folder)) for p in refs)))
     if len(report.groups) > 1:
         rows.append(("scene group", str(s.group + 1)))
     return rows
@@ -71,7 +71,8 @@ def settings(report):
 
 def group_text(report, g):
     (scene, size, frame, ref_tech, overrides), sweeps = report.groups[g]
-    text = f"{scene} · {size_text(sweeps[0].doc.get('size'))} · frame {frame} · reference {ref_tech}"
+    size = size_text(sweeps[0].doc.get("size"))
+    text = f"{scene} · {size} · frame {frame} · reference {ref_tech}"
     return text + ("" if overrides == "{}" else f" {overrides}")
 
 
@@ -112,8 +113,9 @@ def error_section(report, plots, metric):
         n_lab = len(p["labels"])
         shown = (f"{n_lab} of {len(p['points'])} points labelled" if p["labels"] or p["unlabelled"]
                  else "points unlabelled (nothing varies but the colour)")
-        out.append(f'<div class="plots scroll"><figure><img class="map" src="plots/{href(name)}.png" '
-                   f'usemap="#map-{g}" width="{w}" height="{h}" alt="error against time">'
+        out.append(f'<div class="plots scroll"><figure>'
+                   f'<img class="map" src="plots/{href(name)}.png" usemap="#map-{g}" '
+                   f'width="{w}" height="{h}" alt="error against time">'
                    f'<map name="map-{g}">{areas}</map>'
                    f"<figcaption>{e(shown)}; colour: {e(p['colour_key'] or 'technique')} · "
                    f"{plot_links(name)}</figcaption></figure></div>")
@@ -144,7 +146,8 @@ def params_section(report, param_plots):
         out.append(f'<h3>{e(key)}</h3><div class="plots small">')
         for k, mlabel, name in param_plots:
             if k == key:
-                out.append(f'<figure><a href="plots/{href(name)}.png"><img src="plots/{href(name)}.png" '
+                png = f"plots/{href(name)}.png"
+                out.append(f'<figure><a href="{png}"><img src="{png}" '
                            f'alt="{e(mlabel)} against {e(key)}"></a>'
                            f"<figcaption>{e(mlabel)} against {e(key)} · {plot_links(name)}"
                            "</figcaption></figure>")
@@ -179,7 +182,8 @@ def write(report, fronts, metric, error_plots, heatmap, param_plots):
              f"<title>{e(t)}</title>", f"<style>{CSS}</style></head><body>", f"<h1>{e(t)}</h1>",
              f'<p class="sub">{" · ".join(sub)}</p>', settings(report),
              error_section(report, error_plots, metric), fronts_table(report, fronts, metric),
-             heatmap_section(heatmap), params_section(report, param_plots), page_runs.runs_table(report),
+             heatmap_section(heatmap), params_section(report, param_plots),
+             page_runs.runs_table(report),
              f"<script>{JS}</script>", "</body></html>"]
     path = os.path.join(report.out, "index.html")
     with open(path + ".tmp", "w", encoding="utf-8") as f:

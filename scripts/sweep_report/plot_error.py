@@ -108,7 +108,8 @@ def plot(report, group, fronts, metric, plots_dir, name, subtitle):
     fig, ax = figure(10, 6.2)
     draw_points(ax, pts, colouring, marker_of)
     draw_fronts(ax, fronts, colouring, style_of, metric)
-    for values, set_scale in (([p[1] for p in pts], ax.set_xscale), ([p[2] for p in pts], ax.set_yscale)):
+    for values, set_scale in (([p[1] for p in pts], ax.set_xscale),
+                              ([p[2] for p in pts], ax.set_yscale)):
         if values and min(values) > 0 and max(values) / min(values) > 20:
             set_scale("log")  # times or errors over more than a factor 20: log axis
     keys = label_keys(report, colouring, techniques)

@@ -100,8 +100,8 @@ def plot(report, key, mkey, mlabel, plots_dir):
         ax.text(0.5, 0.5, "no data", transform=ax.transAxes, ha="center", va="center")
     elif legend:
         n = len(series)
-        title = " · ".join((["group"] if groups else []) + (["technique"] if len(techs) > 1 else [])
-                           + others)
+        title = " · ".join((["group"] if groups else [])
+                           + (["technique"] if len(techs) > 1 else []) + others)
         ax.legend(fontsize=8 if n <= 16 else 7, ncol=1 if n <= 20 else 2, title=title,
                   title_fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return save(fig, plots_dir, f"{slug(mkey)}-vs-{slug(key)}")
