@@ -10,7 +10,7 @@ th, td { border: 1px solid #ddd; padding: 3px 6px; text-align: left; vertical-al
 th { background: #f3f3f3; position: sticky; top: 0; }
 table.runs th { cursor: pointer; user-select: none; }
 table.runs th.asc::after { content: " \\25B2"; } table.runs th.desc::after { content: " \\25BC"; }
-td.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 tr.pareto td:first-child { font-weight: bold; }
 .scroll { overflow-x: auto; }
 table.runs td:first-child { white-space: nowrap; }
