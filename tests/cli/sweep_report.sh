@@ -294,6 +294,10 @@ mkdir "$WORK/broken-json" && printf '{"schema": ' >"$WORK/broken-json/sweep.json
 expect_exit 2 "^sweep-report: $WORK/broken-json/sweep.json: not valid JSON" -- "$report" "$dir" "$WORK/broken-json" -o "$WORK/never"
 [ ! -e "$WORK/never" ] || fail "a refused report wrote $WORK/never"
 for f in "$WORK/stderr"; do [ "$(wc -l <"$f")" = 1 ] || fail "more than one line for a bad argument"; done
+# A sweep folder named like an option is a folder (penumbra sweep -o -x passes it as is).
+cp -r "$names" "$WORK/-dash"
+(cd "$WORK" && "$report" -dash >/dev/null 2>&1) || fail "a folder named -dash was not reported"
+[ -s "$WORK/-dash/report.json" ] || fail "no report.json in -dash"
 "$report" --help >"$WORK/help" || fail "--help failed"
 grep -q 'pareto-metric' "$WORK/help" || fail "--help does not describe --pareto-metric"
 
