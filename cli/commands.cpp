@@ -7,7 +7,10 @@ namespace penumbra::cli {
 namespace {
 
 constexpr Command kCommands[] = {
-    {"render", "render SCENE.json [options]", "render frames to EXR + timing JSON", runRender},
+    {"render", "render SCENE.json|MODEL.glb [options]", "render frames to EXR + timing JSON",
+     runRender},
+    {"scene", "scene MODEL.glb -o SCENE.json [options]",
+     "write the scene a glTF file renders as (camera, lights, floor)", runScene},
     {"compare", "compare REF.exr TEST.exr [options]",
      "golden-image diff with idiff-style thresholds", runCompare},
     {"techniques", "techniques [NAME] [--json]", "list techniques and their parameters",

@@ -17,6 +17,7 @@ int runTechniques(const Args& args);
 int runInfo(const Args& args);
 int runSweep(const Args& args);
 int runFitLights(const Args& args);
+int runScene(const Args& args);
 // Hidden helpers of the install: `penumbra completion bash`, `penumbra manpage`.
 int runCompletion(const Args& args);
 int runManpage(const Args& args);
