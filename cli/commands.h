@@ -25,7 +25,7 @@ int runManpage(const Args& args);
 // The table of commands: dispatch, usage, "did you mean", completion and the man page.
 struct Command {
     std::string_view name;
-    std::string_view synopsis;  // "render SCENE.json [options]"
+    std::string_view synopsis;  // "render SCENE|MODEL.glb [options]"
     std::string_view summary;   // one line
     int (*run)(const Args&);
 };
