@@ -1,6 +1,7 @@
 // `penumbra scene MODEL.glb -o SCENE.json`: the scene `render MODEL.glb` renders, written as a
 // plain scene JSON to edit (explicit camera and lights, the glTF named relative to SCENE.json).
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -24,7 +25,7 @@ floor, every value explicit. The glTF is named by a path relative to SCENE.json'
 file is written atomically; an existing SCENE.json is replaced.
 
 options:
-  -o, --output SCENE.json  where to write the scene (required)
+  -o, --output SCENE.json  where to write the scene (required; ends in .json)
       --size WxH           image size the camera is framed for (default 1024x768)
       --light-size W[xH]   the glTF's lights as rect lights of this size, metres (default: a
                            quarter of the model's bounding radius; the default light: the
@@ -67,6 +68,8 @@ int runScene(const Args& args) {
     if (!scene::isGltfPath(*input))
         c.fail("'" + quoteText(*input) + "' is not a .gltf or .glb file");
     if (!output) c.fail("missing -o SCENE.json (see penumbra scene --help)");
+    if (std::filesystem::path(*output).extension() != ".json")
+        c.fail("--output: " + quoteText(*output) + ": the file name must end in .json");
     checkOutputPath(*output, "--output");
     scene::AssetStore assets;
     const nlohmann::ordered_json doc = scene::gltfSceneFor(*input, *output, options, image, assets);

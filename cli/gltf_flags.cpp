@@ -8,11 +8,11 @@
 namespace penumbra::cli {
 namespace {
 
-// One side of --light-size: a number in (0, kMaxLightSize] metres.
+// One side of --light-size: a number in [kMinLightSize, kMaxLightSize] metres.
 float lightSide(const ArgCursor& c, const std::string& text) {
     const double v = parseDouble(c, "--light-size", text);
-    if (!(v > 0.0 && v <= kMaxLightSize))
-        c.fail("--light-size: '" + quoteText(text) + "' is out of range (0, 1e6] metres");
+    if (!(v >= kMinLightSize && v <= kMaxLightSize))
+        c.fail("--light-size: '" + quoteText(text) + "' is out of range [1e-6, 1e6] metres");
     return static_cast<float>(v);
 }
 

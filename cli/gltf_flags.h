@@ -7,7 +7,8 @@
 
 namespace penumbra::cli {
 
-inline constexpr double kMaxLightSize = 1e6;  // metres, each side
+inline constexpr double kMinLightSize = 1e-6;  // metres, each side
+inline constexpr double kMaxLightSize = 1e6;
 
 // Consumes one of the flags at the cursor into OPTIONS; false if the argument is neither.
 bool parseGltfSceneFlag(ArgCursor& c, scene::GltfSceneOptions& options);

@@ -68,11 +68,14 @@ expect_exit 2 "^penumbra: ortho.gltf: cameras.1: an orthographic camera" -- "$PE
 expect_exit 2 "^penumbra: ortho.gltf: cameras.1: an orthographic camera" -- "$PENUMBRA" scene ortho.gltf -o s.json
 expect_exit 2 "^penumbra: nan.gltf: " -- "$PENUMBRA" render nan.gltf
 rm ortho.gltf nan.gltf
-for bad in 0 -1 1x nan 2x0 x1 1e7 1x1x1; do
+for bad in 0 -1 1x nan 2x0 x1 1e7 1e-50 1x1x1; do
     expect_exit 2 "^penumbra: render: --light-size: " -- "$PENUMBRA" render ../duck.glb --light-size "$bad"
     expect_exit 2 "^penumbra: scene: --light-size: " -- "$PENUMBRA" scene ../duck.glb --light-size "$bad" -o s.json
 done
 expect_exit 2 "^penumbra: scene: missing -o SCENE.json" -- "$PENUMBRA" scene ../duck.glb
+expect_exit 2 "^penumbra: scene: --output: ../duck.glb: the file name must end in .json" -- \
+    "$PENUMBRA" scene ../duck.glb -o ../duck.glb
+cmp -s ../duck.glb "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" || fail "scene -o overwrote the model"
 expect_exit 2 "^penumbra: scene: missing MODEL.glb" -- "$PENUMBRA" scene -o s.json
 expect_exit 2 "^penumbra: scene: '../named.json' is not a .gltf or .glb file" -- "$PENUMBRA" scene ../named.json -o s.json
 expect_exit 2 "^penumbra: render: --no-floor: only for a .gltf/.glb model" -- "$PENUMBRA" render ../named.json --no-floor
