@@ -39,8 +39,11 @@ void blameOverride(const UnknownKeyError& e, const std::vector<Override>& overri
 ImageSettings imageAfterOverrides(const std::vector<Override>& overrides) {
     ImageSettings image;
     nlohmann::json doc = {{"image", {{"width", image.width}, {"height", image.height}}}};
+    std::vector<Override> image_overrides;  // the others may need keys this document lacks
+    for (const Override& o : overrides)
+        if (o.key == "image" || o.key.rfind("image.", 0) == 0) image_overrides.push_back(o);
     try {
-        applyOverrides(doc, overrides);
+        applyOverrides(doc, image_overrides);
     } catch (const InputError&) {
         return image;
     }

@@ -113,7 +113,9 @@ TEST(GltfScene, FramingCameraKeepsTheModelInView) {
     const auto path = b.writeGlb("framed");
     const Bounds box{{0, 0, 0}, {3, 1, 0}};
     expectInView(loadModel(path).camera, box, 1024, 768);
-    const Scene tall = loadModel(path, {{"image.width", "200"}, {"image.height", "800"}});
+    const Scene tall = loadModel(path, {{"lights.0.intensity", "3"},  // not the image's: ignored
+                                        {"image.width", "200"},
+                                        {"image.height", "800"}});
     expectInView(tall.camera, box, 200, 800);
     // Tight: the bounding sphere touches the narrower field (x kFramingMargin), not far inside.
     const float distance = glm::length(tall.camera.position - box.center());
