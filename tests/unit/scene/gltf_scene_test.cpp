@@ -89,6 +89,17 @@ TEST(GltfScene, InfiniteZfarCoversTheModelAndTheFloor) {
     EXPECT_LE(s.camera.far, farthest * kFarMargin * 1.001f);
 }
 
+TEST(GltfScene, NamedCameraWithInfiniteZfarCoversTheScenesObjects) {
+    quadWithCamera(perspective(0.5, 0.1)).writeGltf("infinite_ref");
+    json doc = test::minimalScene();  // a floor 8 x 8 at y = 0
+    doc["camera"] = {{"gltf", "infinite_ref.gltf"}};
+    const Scene s = test::loadDoc(doc).at(0);
+    // The farthest corner of the box around the floor and the ball (radius 0.3 at y = 1).
+    const float corner = glm::length(glm::vec3(4, 1.3f, -4) - s.camera.position);
+    EXPECT_GE(s.camera.far, corner);
+    EXPECT_LE(s.camera.far, corner * kFarMargin * 1.001f);
+}
+
 // Every corner of BOX inside the camera's frustum at WIDTH x HEIGHT.
 void expectInView(const Camera& c, const Bounds& box, int width, int height) {
     const glm::mat4 view = glm::lookAt(c.position, c.target, c.up);
