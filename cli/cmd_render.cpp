@@ -1,10 +1,12 @@
-// `penumbra render SCENE.json [options]`: argv -> RenderRequest; no GL, no JSON details here.
+// `penumbra render SCENE.json|MODEL.glb [options]`: argv -> RenderRequest; no GL, no JSON details
+// here.
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
 
 #include "cli/backend_flags.h"
 #include "cli/commands.h"
+#include "cli/gltf_flags.h"
 #include "cli/run_flags.h"
 #include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
@@ -12,10 +14,12 @@
 namespace penumbra::cli {
 namespace {
 
-constexpr const char* kHelp = R"(usage: penumbra render SCENE.json [options]
+constexpr const char* kHelp = R"(usage: penumbra render SCENE.json|MODEL.glb [options]
 
 Renders the scene's frames offscreen with one soft-shadow technique and writes, per frame, an
 OpenEXR image (beauty, depth, position, normal, visibility, id, diagnostics) and a timing JSON.
+A .gltf/.glb is rendered as the scene `penumbra scene` makes of it: its first camera (else one
+that frames the model), its KHR_lights_punctual lights (else one light above), and a floor.
 
 options:
   -t, --technique NAME   a technique of `penumbra techniques`; overrides technique.name
@@ -33,6 +37,9 @@ options:
       --frame-offset K   added to --frame-from-env's value (default 0)
       --list-frames      print the frames this command would render, one per line, and exit
       --size WxH         image size (same as -D image.width=W -D image.height=H)
+      --light-size W[xH] a glTF's lights as rect lights of this size, metres (default: a
+                         quarter of the model's bounding radius; the default light: the radius)
+      --no-floor         a glTF: no floor under the model
       --backend B        auto (default), egl (device, then surfaceless), egl-device,
                          egl-surfaceless, osmesa
       --device N         EGL device index (see `penumbra info`)
@@ -96,6 +103,7 @@ bool parseRenderOption(ArgCursor& c, app::RenderRequest& req) {
     } else if (c.flag("", "--list-frames")) {
         req.list_frames = true;
     } else if (parseRunFlag(c, req.overrides, req.runs)) {
+    } else if (parseGltfSceneFlag(c, req.gltf)) {
     } else if (c.flag("", "--skip-existing")) {
         req.skip_existing = true;
     } else if (c.flag("", "--strict")) {
@@ -139,6 +147,9 @@ int runRender(const Args& args) {
         c.unknown();
     }
     if (!scene) c.fail("missing SCENE.json (see --help)");
+    if (gltfSceneFlagsGiven(req.gltf) && !scene::isGltfPath(*scene))
+        c.fail(std::string(req.gltf.light_size ? "--light-size" : "--no-floor") +
+               ": only for a .gltf/.glb model (a scene file has its own lights and objects)");
     if (frame_offset && !frame_env) c.fail("--frame-offset: only with --frame-from-env");
     if (frame_env) {
         if (req.frames) c.fail("--frame-from-env: not with --frames");

@@ -7,7 +7,9 @@ namespace penumbra::cli {
 namespace {
 
 constexpr Command kCommands[] = {
-    {"render", "render SCENE.json [options]", "render frames to EXR + timing JSON", runRender},
+    {"render", "render SCENE|MODEL.glb [options]", "render frames to EXR + timing JSON", runRender},
+    {"scene", "scene MODEL.glb -o SCENE.json", "a glTF as an editable scene JSON (camera, lights)",
+     runScene},
     {"compare", "compare REF.exr TEST.exr [options]",
      "golden-image diff with idiff-style thresholds", runCompare},
     {"techniques", "techniques [NAME] [--json]", "list techniques and their parameters",

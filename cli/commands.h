@@ -18,6 +18,7 @@ int runInfo(const Args& args);
 int runSweep(const Args& args);
 int runFitLights(const Args& args);
 int runContactSheet(const Args& args);
+int runScene(const Args& args);
 // Hidden helpers of the install: `penumbra completion bash`, `penumbra manpage`.
 int runCompletion(const Args& args);
 int runManpage(const Args& args);
@@ -25,7 +26,7 @@ int runManpage(const Args& args);
 // The table of commands: dispatch, usage, "did you mean", completion and the man page.
 struct Command {
     std::string_view name;
-    std::string_view synopsis;  // "render SCENE.json [options]"
+    std::string_view synopsis;  // "render SCENE|MODEL.glb [options]"
     std::string_view summary;   // one line
     int (*run)(const Args&);
 };

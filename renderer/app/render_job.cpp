@@ -38,9 +38,9 @@ struct JobInput {
 
 // 1. Everything from the input, validated before any GL or output.
 JobInput loadInput(const RenderRequest& req) {
-    refuseModelAsScene(req.scene);
     scene::LoadOptions options;
     options.technique = req.technique;
+    options.gltf = req.gltf;
     auto source = scene::SceneSource::load(req.scene, req.overrides, options);
     const std::vector<int> frames = chooseFrames(req, source);
     scene::Scene first = source.at(frames.front());

@@ -18,6 +18,7 @@ struct RenderRequest {
     std::filesystem::path scene;
     std::vector<scene::Override> overrides;  // -D, in order (--size is added as overrides)
     std::optional<std::string> technique;    // -t
+    scene::GltfSceneOptions gltf;            // --light-size, --no-floor (a .gltf/.glb scene)
     std::optional<std::string> output;       // -o PATTERN
     std::optional<std::string> timings;      // --timings PATTERN
     std::optional<std::string> preview;      // --preview PATTERN

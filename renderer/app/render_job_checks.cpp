@@ -63,15 +63,4 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
         throw InputError(where + "lights: more lights than this GL's array layers allow");
 }
 
-void refuseModelAsScene(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".gltf" || ext == ".glb")
-        throw InputError(file.string() +
-                         ": a glTF model, not a scene: name it in a scene's objects "
-                         "({\"gltf\": \"" +
-                         file.filename().string() + "\"}, see docs/scene-format.md)");
-}
-
 }  // namespace penumbra::app

@@ -13,10 +13,6 @@
 
 namespace penumbra::app {
 
-// A glTF model given where a scene belongs: an InputError with a hint instead of a JSON parse
-// error.
-void refuseModelAsScene(const std::filesystem::path& file);
-
 // S's technique; else InputError naming --technique (when REQ gave it) or the scene's key.
 const techniques::TechniqueInfo& findTechniqueOrThrow(const scene::Scene& s,
                                                       const RenderRequest& req);

@@ -1,5 +1,6 @@
-// Load-once caches for a scene's assets, keyed by canonical path or by a derived model's
-// parameters; one mutex, since SceneSource::at may be called from several threads.
+// Load-once caches for a scene's assets (a glTF file's model, cameras and lights together),
+// keyed by canonical path or by a derived model's parameters; one mutex, since SceneSource::at
+// may be called from several threads.
 #include "renderer/scene/asset_store.h"
 
 #include "renderer/scene/environment_image.h"
@@ -14,9 +15,13 @@ std::string AssetStore::pathKey(const std::filesystem::path& path) {
 }
 
 std::shared_ptr<const Model> AssetStore::gltf(const std::filesystem::path& path) {
+    return gltfFile(path)->model;
+}
+
+std::shared_ptr<const GltfFile> AssetStore::gltfFile(const std::filesystem::path& path) {
     const std::lock_guard lock(mutex_);
     auto& slot = gltf_[pathKey(path)];
-    if (!slot) slot = loadGltf(path);
+    if (!slot) slot = loadGltfFile(path);
     return slot;
 }
 

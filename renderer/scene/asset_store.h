@@ -9,6 +9,7 @@
 #include <mutex>
 #include <string>
 
+#include "renderer/scene/gltf_loader.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::scene {
@@ -17,6 +18,8 @@ class AssetStore {
 public:
     // loadGltf(PATH) the first time PATH (made canonical) is asked for. Throws its InputError.
     std::shared_ptr<const Model> gltf(const std::filesystem::path& path);
+    // The whole file (model, bounds, cameras, lights), loaded once with gltf()'s model.
+    std::shared_ptr<const GltfFile> gltfFile(const std::filesystem::path& path);
     // loadEnvironmentImage(PATH) the first time PATH is asked for. Throws its InputError.
     std::shared_ptr<const EnvironmentImage> environment(const std::filesystem::path& path);
     // MAKE() the first time KEY is asked for. At most kMaxDerived are kept (animated shapes make
@@ -31,7 +34,7 @@ private:
     static constexpr std::size_t kMaxDerived = 256;
 
     std::mutex mutex_;
-    std::map<std::string, std::shared_ptr<const Model>> gltf_;
+    std::map<std::string, std::shared_ptr<const GltfFile>> gltf_;
     std::map<std::string, std::shared_ptr<const EnvironmentImage>> environments_;
     std::map<std::string, std::shared_ptr<const Model>> derived_;
 };

@@ -103,6 +103,7 @@ GltfDocument readGltfDocument(const std::filesystem::path& path) {
     nlohmann::json json = parseJsonText(binary ? glb.json : bytes, doc.label);
 
     checkGltfJson(json, doc.label);
+    readCamerasAndLights(json, doc);
     if (const auto required = json.find("extensionsRequired"); required != json.end())
         for (const auto& name : *required)
             if (!isIgnorableExtension(name.get<std::string>()))

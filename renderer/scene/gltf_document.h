@@ -6,9 +6,11 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/scene/gltf_views.h"
 #include "renderer/scene/tinygltf_include.h"
 
 namespace penumbra::scene {
@@ -26,6 +28,10 @@ struct GltfDocument {
     std::string label;  // the file path as given: the start of every error message
     tinygltf::Model model;
     std::map<std::pair<int, int>, DracoReference> draco;  // by (mesh, primitive)
+    std::vector<GltfCamera> cameras;
+    std::vector<GltfPunctualLight> lights;
+    std::vector<int> node_camera;  // per node: its camera index, or -1
+    std::vector<int> node_light;   // per node: its KHR_lights_punctual light index, or -1
 
     // Throws InputError("<label>: <key>: <what>").
     [[noreturn]] void fail(const std::string& key, const std::string& what) const;
@@ -37,5 +43,9 @@ GltfDocument readGltfDocument(const std::filesystem::path& path);
 // Type checks on the JSON fields the loader reads (tinygltf 2.7 reads a wrongly typed field as
 // absent) and on bufferView ranges against their buffers. Throws InputError naming the key.
 void checkGltfJson(const nlohmann::json& doc, const std::string& label);
+
+// Reads the cameras, the KHR_lights_punctual lights and the nodes' references to them from the
+// document's JSON into DOC, every value checked (gltf_views.cpp). Throws InputError naming the key.
+void readCamerasAndLights(const nlohmann::json& json, GltfDocument& doc);
 
 }  // namespace penumbra::scene

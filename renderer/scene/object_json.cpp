@@ -87,15 +87,9 @@ std::shared_ptr<const Model> readPrimitive(const Field& f, const std::string& sh
 // The glTF's Model, loaded once per file; with a base colour, a tinted copy made once per colour.
 std::shared_ptr<const Model> readGltf(const Field& f, const glm::vec4& color,
                                       const SceneContext& context) {
-    const std::string path = f.string();
-    if (path.empty()) f.fail("empty path");
-    const std::filesystem::path resolved = resolveAsset(context, path);
-    std::shared_ptr<const Model> model;
-    try {
-        model = context.assets->gltf(resolved);
-    } catch (const InputError& e) {
-        f.fail(e.what());
-    }
+    const std::shared_ptr<const GltfFile> file = readGltfReference(f, context);
+    const std::shared_ptr<const Model> model = file->model;
+    const std::filesystem::path resolved = resolveAsset(context, f.string());
     if (color == glm::vec4(1.0f)) return model;
     const std::string key = "gltf|" + AssetStore::pathKey(resolved) + "|" +
                             exactKey({color.r, color.g, color.b, color.a});
@@ -164,6 +158,16 @@ ShadowRole readShadow(const Field& f) {
 }
 
 }  // namespace
+
+std::shared_ptr<const GltfFile> readGltfReference(const Field& f, const SceneContext& context) {
+    const std::string path = f.string();
+    if (path.empty()) f.fail("empty path");
+    try {
+        return context.assets->gltfFile(resolveAsset(context, path));
+    } catch (const InputError& e) {
+        f.fail(e.what());
+    }
+}
 
 Object buildObject(const Field& o, std::size_t index, const SceneContext& context) {
     o.expectObject(

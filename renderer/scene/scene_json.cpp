@@ -1,11 +1,15 @@
 // The scene document's top level and its camera, image, lights, environment and technique
-// blocks, each value checked for type, range and consistency.
+// blocks, each value checked for type, range and consistency; a camera or a light entry may
+// take a glTF's camera or punctual lights instead ({"gltf": ...}, gltf_scene.h).
 #include "renderer/scene/scene_json.h"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/scene/gltf_scene.h"
 
 namespace penumbra::scene {
 namespace {
@@ -14,28 +18,96 @@ bool parallel(const glm::vec3& a, const glm::vec3& b) {
     return glm::length(glm::cross(glm::normalize(a), glm::normalize(b))) < 1e-6f;
 }
 
-Camera readCamera(const Field& f) {
-    Camera c;
-    if (!f.present()) return c;
-    f.expectObject({"position", "target", "up", "fov_y", "near", "far"});
-    c.position = f.member("position").vec3Or(c.position);
-    c.target = f.member("target").vec3Or(c.target);
-    c.up = f.member("up").vec3Or(c.up);
-    const Field fov = f.member("fov_y");
-    c.fov_y = static_cast<float>(fov.numberOr(c.fov_y));
-    if (!(c.fov_y > 0.0f && c.fov_y < 180.0f)) fov.fail("must be in (0, 180) degrees");
-    const Field near = f.member("near");
-    c.near = static_cast<float>(near.numberOr(c.near));
-    if (!(c.near > 0.0f)) near.fail("must be > 0");
-    const Field far = f.member("far");
-    c.far = static_cast<float>(far.numberOr(c.far));
-    if (!(c.far > c.near)) far.fail("must be greater than camera.near");
+// The checks every camera passes, explicit or taken from a glTF.
+void checkCamera(const Camera& c, const Field& f) {
+    if (!(c.fov_y > 0.0f && c.fov_y < 180.0f))
+        f.member("fov_y").fail("must be in (0, 180) degrees");
+    if (!(c.near > 0.0f)) f.member("near").fail("must be > 0");
+    if (!(c.far > c.near)) f.member("far").fail("must be greater than camera.near");
     const glm::vec3 view = c.target - c.position;
     if (glm::length(view) == 0.0f)
         f.member("target").fail("same as camera.position (no view direction)");
     if (glm::length(c.up) == 0.0f) f.member("up").fail("zero vector");
     if (parallel(view, c.up)) f.member("up").fail("parallel to the view direction");
+}
+
+// The placement of the camera a {"gltf": ...} camera names by "index" or "name", else the first.
+const GltfPlacement& chosenGltfCamera(const Field& f, const GltfFile& file) {
+    const Field index = f.member("index");
+    const Field name = f.member("name");
+    if (index.present() && name.present()) f.fail("has both 'index' and 'name' (give one)");
+    const std::string count = std::to_string(file.cameras.size());
+    int wanted = -1;
+    if (index.present()) {
+        wanted = static_cast<int>(index.integer(0, INT_MAX));
+        if (static_cast<std::size_t>(wanted) >= file.cameras.size())
+            index.fail("camera " + std::to_string(wanted) + " does not exist (" + file.label +
+                       " has " + count + " cameras)");
+    } else if (name.present()) {
+        const std::string wanted_name = name.string();
+        for (std::size_t i = 0; i < file.cameras.size() && wanted < 0; ++i)
+            if (file.cameras[i].name == wanted_name) wanted = static_cast<int>(i);
+        if (wanted < 0)
+            name.fail("no camera named '" + quoteText(wanted_name) + "' in " + file.label);
+    }
+    if (wanted < 0) {
+        if (const GltfPlacement* first = firstPlacedCamera(file)) return *first;
+        f.member("gltf").fail(file.label + " has no camera placed in its glTF scene");
+    }
+    for (const GltfPlacement& p : file.placed_cameras)
+        if (p.index == wanted) return p;
+    (index.present() ? index : name)
+        .fail("camera " + std::to_string(wanted) + " of " + file.label +
+              " is placed by no node of its glTF scene");
+}
+
+// {"gltf": FILE, "index" or "name"}: that glTF camera; FAR_AUTO when its zfar is infinite.
+Camera readGltfCamera(const Field& f, const SceneContext& context, bool& far_auto) {
+    f.expectObject({"gltf", "index", "name"});
+    const Field path = f.member("gltf");
+    const auto file = readGltfReference(path, context);
+    const GltfPlacement& placed = chosenGltfCamera(f, *file);
+    Camera c;
+    try {
+        c = cameraFromGltf(*file, placed, checkedBounds(*file));
+    } catch (const InputError& e) {
+        path.fail(e.what());
+    }
+    far_auto = !file->cameras[static_cast<std::size_t>(placed.index)].zfar;
     return c;
+}
+
+Camera readCamera(const Field& f, const SceneContext& context, bool& far_auto) {
+    Camera c;
+    far_auto = false;
+    if (!f.present()) return c;
+    if (f.json().is_object() && f.json().contains("gltf")) {
+        c = readGltfCamera(f, context, far_auto);
+        checkCamera(c, f);
+        return c;
+    }
+    f.expectObject({"position", "target", "up", "fov_y", "near", "far"});
+    c.position = f.member("position").vec3Or(c.position);
+    c.target = f.member("target").vec3Or(c.target);
+    c.up = f.member("up").vec3Or(c.up);
+    c.fov_y = static_cast<float>(f.member("fov_y").numberOr(c.fov_y));
+    c.near = static_cast<float>(f.member("near").numberOr(c.near));
+    c.far = static_cast<float>(f.member("far").numberOr(c.far));
+    checkCamera(c, f);
+    return c;
+}
+
+// The world bounds of OBJECTS' vertices (for a glTF camera with an infinite zfar).
+Bounds objectBounds(const std::vector<Object>& objects) {
+    Bounds b{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (const Object& o : objects)
+        for (const Mesh& mesh : o.model->meshes)
+            for (const glm::vec3& p : mesh.positions) {
+                const glm::vec3 w(o.transform * glm::vec4(p, 1.0f));
+                b.min = glm::min(b.min, w);
+                b.max = glm::max(b.max, w);
+            }
+    return b;
 }
 
 ImageSettings readImage(const Field& f, int max_size) {
@@ -55,7 +127,23 @@ ImageSettings readImage(const Field& f, int max_size) {
     return image;
 }
 
-RectLight readLight(const Field& f) {
+// The checks every light passes, explicit or taken from a glTF.
+void checkLight(const RectLight& light, const Field& f) {
+    const glm::vec3 facing = light.target - light.position;
+    if (glm::length(facing) == 0.0f)
+        f.member("target").fail("same as position (the light faces nowhere)");
+    if (glm::length(light.up) == 0.0f) f.member("up").fail("zero vector");
+    if (parallel(facing, light.up))
+        f.member("up").fail("parallel to the direction the light faces");
+}
+
+glm::vec2 readLightSize(const Field& size) {
+    const glm::vec2 s = size.vec2();
+    if (!(s.x > 0.0f && s.y > 0.0f)) size.fail("zero-size light (width and height must be > 0)");
+    return s;
+}
+
+RectLight readRectLight(const Field& f) {
     RectLight light;
     f.expectObject({"type", "position", "target", "up", "size", "color", "intensity"});
     if (const Field type = f.member("type"); type.present() && type.string() != "rect")
@@ -63,11 +151,7 @@ RectLight readLight(const Field& f) {
     light.position = f.member("position").vec3Or(light.position);
     light.target = f.member("target").vec3Or(light.target);
     light.up = f.member("up").vec3Or(light.up);
-    if (const Field size = f.member("size"); size.present()) {
-        light.size = size.vec2();
-        if (!(light.size.x > 0.0f && light.size.y > 0.0f))
-            size.fail("zero-size light (width and height must be > 0)");
-    }
+    if (const Field size = f.member("size"); size.present()) light.size = readLightSize(size);
     if (const Field color = f.member("color"); color.present()) {
         light.color = color.vec3();
         if (light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f)
@@ -77,20 +161,41 @@ RectLight readLight(const Field& f) {
         light.intensity = static_cast<float>(intensity.number());
         if (light.intensity < 0.0f) intensity.fail("must be >= 0");
     }
-    const glm::vec3 facing = light.target - light.position;
-    if (glm::length(facing) == 0.0f)
-        f.member("target").fail("same as position (the light faces nowhere)");
-    if (glm::length(light.up) == 0.0f) f.member("up").fail("zero vector");
-    if (parallel(facing, light.up))
-        f.member("up").fail("parallel to the direction the light faces");
+    checkLight(light, f);
     return light;
 }
 
-std::vector<RectLight> readLights(const Field& f) {
+// {"gltf": FILE, "size": [w, h]}: every punctual light FILE's glTF scene places.
+std::vector<RectLight> readGltfLights(const Field& f, const SceneContext& context) {
+    f.expectObject({"gltf", "size"});
+    const Field path = f.member("gltf");
+    const auto file = readGltfReference(path, context);
+    std::optional<glm::vec2> size;
+    if (const Field s = f.member("size"); s.present()) size = readLightSize(s);
+    std::vector<RectLight> lights;
+    try {
+        lights = lightsFromGltf(*file, size);
+    } catch (const InputError& e) {
+        path.fail(e.what());
+    }
+    if (lights.empty())
+        path.fail(file->label + " has no KHR_lights_punctual light placed in its glTF scene");
+    for (const RectLight& light : lights) checkLight(light, f);
+    return lights;
+}
+
+// One element of "lights": a rect light, or a glTF's lights.
+std::vector<RectLight> readLight(const Field& f, const SceneContext& context) {
+    if (f.json().is_object() && f.json().contains("gltf")) return readGltfLights(f, context);
+    return {readRectLight(f)};
+}
+
+std::vector<RectLight> readLights(const Field& f, const SceneContext& context) {
     std::vector<RectLight> lights;
     if (!f.present()) return lights;
     const std::size_t count = f.arraySize();
-    for (std::size_t i = 0; i < count; ++i) lights.push_back(readLight(f.element(i)));
+    for (std::size_t i = 0; i < count; ++i)
+        for (const RectLight& light : readLight(f.element(i), context)) lights.push_back(light);
     return lights;
 }
 
@@ -149,7 +254,8 @@ void checkScenePart(const nlohmann::json& value, const std::vector<std::string>&
     const Field f(&value, key, context.file);
     const std::string& top = part.at(0);
     if (top == "camera") {
-        (void)readCamera(f);
+        bool far_auto = false;
+        (void)readCamera(f, context, far_auto);
     } else if (top == "image") {
         (void)readImage(f, context.max_image_size);
     } else if (top == "environment") {
@@ -157,7 +263,7 @@ void checkScenePart(const nlohmann::json& value, const std::vector<std::string>&
     } else if (top == "technique") {
         (void)readTechnique(f);
     } else if (top == "lights") {
-        (void)readLight(f);
+        (void)readLight(f, context);
     } else if (top == "objects") {
         (void)buildObject(f, static_cast<std::size_t>(std::stoul(part.at(1))), context);
     }
@@ -186,13 +292,20 @@ Scene buildScene(const nlohmann::json& doc, const SceneContext& context) {
             name.fail("'" + quoteText(scene.name) +
                       "' is not a plain file name (no '/', not '.' or '..', at most 200 bytes)");
     }
-    scene.camera = readCamera(root.member("camera"));
+    bool far_auto = false;
+    scene.camera = readCamera(root.member("camera"), context, far_auto);
     scene.image = readImage(root.member("image"), context.max_image_size);
-    scene.lights = readLights(root.member("lights"));
+    scene.lights = readLights(root.member("lights"), context);
     scene.environment = readEnvironment(root.member("environment"), context);
     if (scene.lights.empty() && !scene.environment)
         root.member("lights").fail("the scene has no light and no environment (nothing lights it)");
     scene.objects = buildObjects(root.member("objects"), context);
+    if (far_auto) {  // a glTF camera's infinite zfar: far enough for every object
+        scene.camera.far = std::max(coveringFar(scene.camera.position, objectBounds(scene.objects)),
+                                    2.0f * scene.camera.near);
+        if (!std::isfinite(scene.camera.far))
+            root.member("camera").fail("no finite far plane covers the objects");
+    }
     scene.technique = readTechnique(root.member("technique"));
     return scene;
 }

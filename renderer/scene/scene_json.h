@@ -15,12 +15,13 @@
 namespace penumbra::scene {
 
 constexpr const char* kSceneFormat = "penumbra-scene/1";
+constexpr int kMaxImageSize = 16384;  // image.width/height limit before the GL's
 
 struct SceneContext {
-    std::string file;              // the scene path as given: the start of every error
-    std::filesystem::path folder;  // relative asset paths resolve against it
-    std::string default_name;      // the file's stem
-    int max_image_size = 16384;    // image.width/height limit
+    std::string file;                    // the scene path as given: the start of every error
+    std::filesystem::path folder;        // relative asset paths resolve against it
+    std::string default_name;            // the file's stem
+    int max_image_size = kMaxImageSize;  // image.width/height limit
     AssetStore* assets = nullptr;
 };
 
@@ -30,6 +31,9 @@ Scene buildScene(const nlohmann::json& doc, const SceneContext& context);
 // The "objects" array, and its element INDEX (object_json.cpp).
 std::vector<Object> buildObjects(const Field& objects, const SceneContext& context);
 Object buildObject(const Field& object, std::size_t index, const SceneContext& context);
+
+// The glTF file that FIELD (a string path) names, loaded once per scene; fails at FIELD.
+std::shared_ptr<const GltfFile> readGltfReference(const Field& field, const SceneContext& context);
 
 // The top-level block that holds dotted key PARTS and checks on its own: ["camera"], ["image"],
 // ["environment"], ["technique"], ["lights", "N"] or ["objects", "N"] (empty for other keys).

@@ -34,6 +34,32 @@ void blameOverride(const UnknownKeyError& e, const std::vector<Override>& overri
             throw InputError("-D " + o.key + ": " + e.what_only());
 }
 
+// The image size the overrides give a default image (for framing a glTF's camera), or the
+// default when they give none or a bad one (loading reports that one).
+ImageSettings imageAfterOverrides(const std::vector<Override>& overrides) {
+    ImageSettings image;
+    nlohmann::json doc = {{"image", {{"width", image.width}, {"height", image.height}}}};
+    std::vector<Override> image_overrides;  // the others may need keys this document lacks
+    for (const Override& o : overrides)
+        if (o.key == "image" || o.key.rfind("image.", 0) == 0) image_overrides.push_back(o);
+    try {
+        applyOverrides(doc, image_overrides);
+    } catch (const InputError&) {
+        return image;
+    }
+    const nlohmann::json* block = findAt(doc, {"image"});
+    if (!block || !block->is_object()) return image;
+    auto read = [&](const char* key, int& value) {
+        const auto it = block->find(key);
+        if (it != block->end() && it->is_number_integer() && it->get<long long>() >= 1 &&
+            it->get<long long>() <= kMaxImageSize)
+            value = it->get<int>();
+    };
+    read("width", image.width);
+    read("height", image.height);
+    return image;
+}
+
 }  // namespace
 
 struct SceneSource::Track {
@@ -49,14 +75,22 @@ struct SceneSource::AssetCache {
 SceneSource SceneSource::load(const std::filesystem::path& file,
                               const std::vector<Override>& overrides, const LoadOptions& options) {
     const std::string label = file.string();
-    nlohmann::json doc = parseJsonText(readTextFile(file, label, kMaxSceneFileBytes), label);
-    if (!doc.is_object()) failAt(label, "", "expected a JSON object, got " + describeType(doc));
-    applyTechniqueOption(doc, options.technique);
-    applyOverrides(doc, overrides);
-
     SceneSource source;
     source.path_ = file;
     source.assets_ = std::make_shared<AssetCache>();
+    nlohmann::json doc;
+    if (isGltfPath(file)) {
+        doc = nlohmann::json::parse(gltfSceneFor(file, file, options.gltf,
+                                                 imageAfterOverrides(overrides),
+                                                 source.assets_->store)
+                                        .dump());
+    } else {
+        doc = parseJsonText(readTextFile(file, label, kMaxSceneFileBytes), label);
+        if (!doc.is_object()) failAt(label, "", "expected a JSON object, got " + describeType(doc));
+    }
+    applyTechniqueOption(doc, options.technique);
+    applyOverrides(doc, overrides);
+
     SceneContext& context = source.assets_->context;
     context.file = label;
     context.folder = file.parent_path();

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/scene/gltf_scene.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::scene {
@@ -22,12 +23,14 @@ struct Override {
 struct LoadOptions {
     int max_image_size = 16384;  // image.width/height limit (the renderer lowers it to GL's)
     std::optional<std::string> technique;  // -t NAME: replaces technique.name (see README)
+    GltfSceneOptions gltf;  // --light-size, --no-floor: when the file is a .gltf/.glb
 };
 
 class SceneSource {
 public:
-    // Reads and validates FILE with OVERRIDES applied (including every animation key frame),
-    // loads every glTF and the environment image once. Throws InputError.
+    // Reads and validates FILE with OVERRIDES applied (a .gltf/.glb FILE: the scene that
+    // gltfSceneFor makes of it, framed for the image size the overrides give) (including every
+    // animation key frame), loads every glTF and the environment image once. Throws InputError.
     static SceneSource load(const std::filesystem::path& file,
                             const std::vector<Override>& overrides,
                             const LoadOptions& options = {});

@@ -24,10 +24,10 @@ expect_exit 3 "reference has no channel 'visibilty' \(did you mean 'visibility'\
     "$PENUMBRA" compare a.exr a.exr --channels visibilty
 [ "$(wc -l <"$WORK/stderr")" -eq 1 ] || fail "more than one line for a bad channel"
 
-# A glTF where a scene belongs; wrong extensions; frames; folders. Nothing is written.
+# glTF flags on a scene file; wrong extensions; frames; folders. Nothing is written.
 mkdir clean && cd clean
-expect_exit 2 "^penumbra: .*duck.glb: a glTF model, not a scene: name it in a scene's objects" -- \
-    "$PENUMBRA" render "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb"
+expect_exit 2 "^penumbra: render: --light-size: only for a .gltf/.glb model" -- \
+    "$PENUMBRA" render "$scene" --light-size 1
 expect_exit 2 "^penumbra: --output: x.png: the file name must end in .exr" -- "${r[@]}" -o x.png
 expect_exit 2 "^penumbra: --preview: p.exr: the file name must end in .png" -- "${r[@]}" -o x.exr --preview p.exr
 expect_exit 2 "^penumbra: --frames: frame -3 is negative" -- "$PENUMBRA" render "$scene" -f -3

@@ -19,6 +19,19 @@ for f in shipped:
     assert not errors, f"{f}: {errors[0].message}"
 
 base = json.load(open(small))
+
+# A glTF with a camera (assimp's Cameras.gltf) and one with a punctual light, for the
+# {"gltf": ...} camera and light entries.
+cameras = "/usr/share/assimp/models/glTF2/cameras/Cameras.gltf"
+lit = json.load(open(cameras))
+import base64
+bin_bytes = open(os.path.join(os.path.dirname(cameras), lit["buffers"][0]["uri"]), "rb").read()
+lit["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(bin_bytes).decode()
+lit["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}}
+lit["nodes"].append({"translation": [0, 3, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})
+lit["scenes"][0]["nodes"].append(len(lit["nodes"]) - 1)
+lit_path = os.path.abspath("lit.gltf")
+
 def loader(doc):
     path = "case.json"
     json.dump(doc, open(path, "w"))
@@ -77,7 +90,17 @@ bad = {
     "track without keys": setter(["animation", "tracks", 0, "keys"], KeyError),
     "track of the animation": setter(["animation", "tracks", 0, "key"], "animation.frames"),
     "track with no keys": setter(["animation", "tracks", 0, "keys"], []),
+    "gltf camera with a camera key": setter(["camera"], {"gltf": cameras, "fov_y": 30}),
+    "gltf camera index and name": setter(["camera"], {"gltf": cameras, "index": 0, "name": "a"}),
+    "gltf camera index -1": setter(["camera"], {"gltf": cameras, "index": -1}),
+    "gltf camera index 0.5": setter(["camera"], {"gltf": cameras, "index": 0.5}),
+    "gltf camera empty path": setter(["camera"], {"gltf": ""}),
+    "camera index without gltf": setter(["camera", "index"], 0),
+    "gltf lights unknown key": lambda d: d["lights"].append({"gltf": lit_path, "sise": [1, 1]}),
+    "gltf lights size 0": lambda d: d["lights"].append({"gltf": lit_path, "size": [0, 1]}),
+    "gltf lights with a rect key": lambda d: d["lights"].append({"gltf": lit_path, "intensity": 3}),
 }
+json.dump(lit, open(lit_path, "w"))
 for name, edit in bad.items():
     doc = case(edit)
     rc, message = loader(doc)
@@ -98,6 +121,10 @@ good = {
     "sphere defaults": lambda d: d["objects"].append({"sphere": {}}),
     "samples 4": setter(["image", "samples"], 4),
     "no name": setter(["name"], KeyError),
+    "gltf camera": setter(["camera"], {"gltf": cameras}),
+    "gltf camera by index": setter(["camera"], {"gltf": cameras, "index": 0}),
+    "gltf lights": lambda d: d["lights"].append({"gltf": lit_path, "size": [0.5, 0.25]}),
+    "gltf lights, default size": lambda d: d["lights"].append({"gltf": lit_path}),
 }
 for name, edit in good.items():
     doc = case(edit)

@@ -13,14 +13,9 @@ namespace {
 
 using nlohmann::json;
 using test::expectMessage;
+using test::expectNear;
 using test::GltfBuilder;
 using test::inputErrorOf;
-
-void expectNear(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
-}
 
 glm::vec3 faceNormal(const Mesh& mesh, std::size_t triangle) {
     const glm::vec3 a = mesh.positions[mesh.indices[triangle * 3]];

@@ -11,6 +11,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include "renderer/core/error.h"
@@ -96,6 +97,13 @@ inline std::string inputErrorOf(const std::function<void()>& fn) {
     }
     ADD_FAILURE() << "expected an InputError, nothing was thrown";
     return "";
+}
+
+// Checks that A and B agree within TOLERANCE in each component.
+inline void expectNear(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 // Checks that MESSAGE is one line and contains PART.
