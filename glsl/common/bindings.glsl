@@ -9,7 +9,7 @@
 #define BINDING_SAMPLE_VIEWS 0    // SSBO of SampleView (shadow_maps, common/sample_view.glsl)
 #define BINDING_LIGHTS 1          // SSBO of GpuLight (shade, passes/shading.glsl)
 #define BINDING_SAMPLE_LOOKUPS 2  // UBO of SampleLookup (shadow tests)
-#define BINDING_CASTER_FLAGS 6    // SSBO of int per scene object: 1 casts (common/caster_flags.glsl)
+#define BINDING_CASTER_FLAGS 6    // SSBO of int per object: 1 casts (common/caster_flags.glsl)
 #define MAX_SAMPLE_LOOKUPS 1024   // views per light: N = 32 squared
 
 // std430 sizes of the structs the host mirrors (static_asserts beside each C++ mirror).

@@ -13,10 +13,12 @@
 #include "passes/shading.glsl"
 
 in vec2 v_uv;
-layout(binding = UNIT_SHADE_POSITION) uniform sampler2D u_position;  // representative: xyz, w = coverage
+// Representative: xyz, w = coverage
+layout(binding = UNIT_SHADE_POSITION) uniform sampler2D u_position;
 layout(binding = UNIT_SHADE_NORMAL) uniform sampler2D u_normal;    // xyz, w = view depth
 layout(binding = UNIT_SHADE_ID) uniform isampler2D u_id;       // -1: background
-layout(binding = UNIT_SHADE_SAMPLE_POSITION) uniform sampler2DArray u_sample_position;  // one layer per sample
+// One layer per sample
+layout(binding = UNIT_SHADE_SAMPLE_POSITION) uniform sampler2DArray u_sample_position;
 layout(binding = UNIT_SHADE_SAMPLE_NORMAL) uniform sampler2DArray u_sample_normal;
 layout(binding = UNIT_SHADE_SAMPLE_ALBEDO) uniform sampler2DArray u_sample_albedo;
 layout(binding = UNIT_SHADE_SAMPLE_ID) uniform isampler2DArray u_sample_id;

@@ -1,6 +1,6 @@
-// Binding points of `adaptive`'s shaders (texture, image units and buffers), for its GLSL and its C++
-// alike: written in the subset both preprocessors read (#define, #ifndef, // comments), like
-// glsl/common/bindings.glsl; the C++ includes "glsl/techniques/adaptive/bindings.glsl".
+// Binding points of `adaptive`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/adaptive/bindings.glsl".
 #ifndef PENUMBRA_ADAPTIVE_BINDINGS_GLSL
 #define PENUMBRA_ADAPTIVE_BINDINGS_GLSL
 

@@ -18,7 +18,8 @@ layout(std430, binding = ADAPTIVE_BINDING_COMPARE_TILE_COUNTS) buffer TileCounts
 in vec2 v_uv;
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
-layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;  // raw linear depths (no compare sampler)
+// Raw linear depths (no compare sampler)
+layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;
 
 uniform int u_view_a;     // the two views (= layers) compared
 uniform int u_view_b;

@@ -10,12 +10,15 @@
 // area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
 #include "techniques/bitmask/bindings.glsl"
 #if MICRORECTS
-layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
+// Level-0 texels x0, y0, x1, y1
+layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_extent;
 layout(binding = BITMASK_UNIT_VISIBILITY_RECT_DEPTH) uniform sampler2D u_rect_depth;
 #endif
 #if BITMASK
-layout(binding = BITMASK_UNIT_VISIBILITY_MASKS) uniform usampler2D u_masks;  // rows 0-1: x >= u words, rows 2-3: y >= v
-layout(binding = BITMASK_UNIT_VISIBILITY_SAMPLES) uniform sampler2D u_samples;  // sample k at texel (k, 0): (u, v)
+// Rows 0-1: x >= u words, rows 2-3: y >= v
+layout(binding = BITMASK_UNIT_VISIBILITY_MASKS) uniform usampler2D u_masks;
+// Sample k at texel (k, 0): (u, v)
+layout(binding = BITMASK_UNIT_VISIBILITY_SAMPLES) uniform sampler2D u_samples;
 uniform int u_mask_resolution;
 uniform float u_sample_count;
 #else

@@ -4,7 +4,8 @@
 // along u_direction; the kernel stops at the first pixel that needs no back-projection or lies
 // across a depth discontinuity. Other pixels pass through.
 #include "techniques/bitmask/bindings.glsl"
-layout(binding = BITMASK_UNIT_SMOOTH_LOQ) uniform sampler2D u_loq;     // (level or -1, class, budget, 0)
+// (level or -1, class, budget, 0)
+layout(binding = BITMASK_UNIT_SMOOTH_LOQ) uniform sampler2D u_loq;
 layout(binding = BITMASK_UNIT_SMOOTH_NORMAL) uniform sampler2D u_normal;  // w: view depth
 uniform ivec2 u_direction;
 uniform int u_radius;

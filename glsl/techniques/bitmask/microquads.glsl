@@ -4,7 +4,8 @@
 // A quad counts when all four corners lie in front of the receiver. Needs search.glsl and
 // backproject.glsl's onLight(), maskVisibility() and addBelowHorizon().
 #include "techniques/bitmask/bindings.glsl"
-layout(binding = BITMASK_UNIT_VISIBILITY_EDGES) uniform usampler2D u_edges;  // (offset bin, 2 * angle bin + word half)
+// (offset bin, 2 * angle bin + word half)
+layout(binding = BITMASK_UNIT_VISIBILITY_EDGES) uniform usampler2D u_edges;
 uniform int u_edge_angles;
 uniform int u_edge_offsets;
 

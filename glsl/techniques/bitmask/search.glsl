@@ -10,10 +10,13 @@
 layout(binding = BITMASK_UNIT_SEARCH_POSITION) uniform sampler2D u_position;
 layout(binding = BITMASK_UNIT_SEARCH_NORMAL) uniform sampler2D u_normal;
 layout(binding = BITMASK_UNIT_SEARCH_ID) uniform isampler2D u_id;
-layout(binding = BITMASK_UNIT_SEARCH_RECEIVES) uniform sampler2D u_receives;  // per object id: (receives, casts), 0 or 1
-layout(binding = BITMASK_UNIT_SEARCH_HSM) uniform sampler2D u_hsm;       // (min, max) distance, mip pyramid
+// Per object id: (receives, casts), 0 or 1
+layout(binding = BITMASK_UNIT_SEARCH_RECEIVES) uniform sampler2D u_receives;
+// (min, max) distance, mip pyramid
+layout(binding = BITMASK_UNIT_SEARCH_HSM) uniform sampler2D u_hsm;
 #if ACCEL != 0
-layout(binding = BITMASK_UNIT_SEARCH_MSSM) uniform sampler2DArray u_mssm;  // layer k: 2^k x 2^k neighbourhoods
+// Layer k: 2^k x 2^k neighbourhoods
+layout(binding = BITMASK_UNIT_SEARCH_MSSM) uniform sampler2DArray u_mssm;
 uniform int u_mssm_base;                            // the HSM level that is MSSM layer 0
 #endif
 

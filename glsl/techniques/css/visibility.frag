@@ -30,10 +30,13 @@
 
 in vec2 v_uv;
 layout(binding = CSS_UNIT_VISIBILITY_POSITION) uniform sampler2D u_position;
-layout(binding = CSS_UNIT_VISIBILITY_BASIS) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
+// Mipmapped basis, or its (N+1)^2 SAT
+layout(binding = CSS_UNIT_VISIBILITY_BASIS) uniform sampler2DArray u_basis;
 layout(binding = CSS_UNIT_VISIBILITY_NORMAL) uniform sampler2D u_normal;
-layout(binding = CSS_UNIT_VISIBILITY_BASIS_SEARCH) uniform sampler2DArray u_basis_search;  // u_basis, bilinear in one level
-layout(binding = CSS_UNIT_VISIBILITY_ID) uniform isampler2D u_id;                // the G-buffer's object ids
+// u_basis, bilinear in one level
+layout(binding = CSS_UNIT_VISIBILITY_BASIS_SEARCH) uniform sampler2DArray u_basis_search;
+// The G-buffer's object ids
+layout(binding = CSS_UNIT_VISIBILITY_ID) uniform isampler2D u_id;
 
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;

@@ -1,6 +1,6 @@
-// Binding points of `ssm`'s shaders (texture, image units and buffers), for its GLSL and its C++
-// alike: written in the subset both preprocessors read (#define, #ifndef, // comments), like
-// glsl/common/bindings.glsl; the C++ includes "glsl/techniques/ssm/bindings.glsl".
+// Binding points of `ssm`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/ssm/bindings.glsl".
 #ifndef PENUMBRA_SSM_BINDINGS_GLSL
 #define PENUMBRA_SSM_BINDINGS_GLSL
 

@@ -3,7 +3,8 @@
 // micro-patch list, with their count as the instance count of the splat's indirect draw.
 #include "techniques/ssm/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = SSM_UNIT_COMPACT_OCCLUDER) uniform sampler2D u_occluder;  // linear depth in [0, 1] of the window
+// Linear depth in [0, 1] of the window
+layout(binding = SSM_UNIT_COMPACT_OCCLUDER) uniform sampler2D u_occluder;
 uniform float u_empty;      // the cleared depth: 1 (nearest map) or 0 (farthest map)
 uniform float u_occ_near;
 uniform float u_occ_range;  // far - near

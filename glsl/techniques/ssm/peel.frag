@@ -6,7 +6,8 @@
 in float v_depth;
 in vec3 v_world;
 in vec3 v_normal;
-layout(binding = SSM_UNIT_PEEL_PREVIOUS) uniform sampler2DArray u_previous;  // the layers peeled so far
+// The layers peeled so far
+layout(binding = SSM_UNIT_PEEL_PREVIOUS) uniform sampler2DArray u_previous;
 uniform int u_layer;
 uniform float u_peel_gap;
 uniform vec3 u_light_centre;

@@ -4,7 +4,8 @@
 // covered area is the product of two interval intersections (Atty et al. 3.4, 4.2); the host
 // sums the patches with additive blending, once per receiver layer.
 #include "techniques/ssm/bindings.glsl"
-layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;  // linear receiver depth, 1 = none
+// Linear receiver depth, 1 = none
+layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;
 uniform int u_layer;                                     // the receiver layer splatted into
 uniform vec2 u_light_half;
 uniform vec2 u_ssm_lo;

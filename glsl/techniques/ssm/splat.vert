@@ -26,7 +26,8 @@ uniform vec2 u_occ_texel;    // one texel of it
 
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
-layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_max;  // per receiver layer
+// Per receiver layer
+layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_max;
 #endif
 uniform float u_receiver_near;
 uniform float u_receiver_range;

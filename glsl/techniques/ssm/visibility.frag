@@ -17,12 +17,15 @@
 in vec2 v_uv;
 layout(binding = SSM_UNIT_VISIBILITY_POSITION) uniform sampler2D u_position;
 layout(binding = SSM_UNIT_VISIBILITY_ID) uniform isampler2D u_id;
-layout(binding = SSM_UNIT_VISIBILITY_RECEIVES) uniform sampler2D u_receives;  // 1 per object id that receives shadows
-layout(binding = SSM_UNIT_VISIBILITY_SSM) uniform sampler2DArray u_ssm;  // one layer per receiver layer
+// 1 per object id that receives shadows
+layout(binding = SSM_UNIT_VISIBILITY_RECEIVES) uniform sampler2D u_receives;
+// One layer per receiver layer
+layout(binding = SSM_UNIT_VISIBILITY_SSM) uniform sampler2DArray u_ssm;
 #if TWO_SIDED
 layout(binding = SSM_UNIT_VISIBILITY_SSM_BACK) uniform sampler2DArray u_ssm_back;
 #endif
-layout(binding = SSM_UNIT_VISIBILITY_LAYERS) uniform sampler2DArray u_layers;  // receiver depth per layer, 1 = none
+// Receiver depth per layer, 1 = none
+layout(binding = SSM_UNIT_VISIBILITY_LAYERS) uniform sampler2DArray u_layers;
 layout(binding = SSM_UNIT_VISIBILITY_NORMAL) uniform sampler2D u_normal;
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
