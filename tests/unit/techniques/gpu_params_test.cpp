@@ -140,3 +140,18 @@ TEST(Bindings, EmbeddedHeadersMatchTheHosts) {
     EXPECT_EQ(embedded.at("MAX_SAMPLE_LOOKUPS"), std::to_string(passes::kMaxSampleLookups));
     EXPECT_EQ(embedded.at("UNIT_SHADE_VISIBILITY"), std::to_string(UNIT_SHADE_VISIBILITY));
 }
+
+// Every texture-sized map parameter named map_size is checked against GL_MAX_TEXTURE_SIZE
+// before a render (the generic check asks the table, it does not look for the key).
+TEST(GpuParams, MapSizesAreLimitedByTheTextureSize) {
+    int limited = 0;
+    for (const auto& t : techniques::allTechniques())
+        for (const auto& s : t.params) {
+            if (s.key == "map_size") EXPECT_EQ(s.limited_by, GlLimit::MaxTextureSize) << t.name;
+            if (s.limited_by != GlLimit::None) {
+                ++limited;
+                EXPECT_EQ(s.type, ParamType::Int) << t.name << "." << s.key;
+            }
+        }
+    EXPECT_EQ(limited, 6);  // every technique but exact
+}
