@@ -6,7 +6,7 @@
 
 #include "common/bindings.glsl"
 
-layout(binding = BINDING_GEOMETRIC_NORMAL) uniform sampler2D u_geometric_normal;
+layout(binding = UNIT_GEOMETRIC_NORMAL) uniform sampler2D u_geometric_normal;
 
 vec3 geometricNormal(ivec2 pix) {
     return normalize(texelFetch(u_geometric_normal, pix, 0).xyz);

@@ -1,6 +1,7 @@
 #version 450 core
 // G-buffer targets: position (w = 1 on geometry), normal + view depth, linear albedo, object id,
 // and the geometric normal: the plane of the drawn triangle, facing the side seen.
+#include "common/bindings.glsl"
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -9,7 +10,7 @@ in float v_view_depth;
 uniform vec4 u_base_color;
 uniform int u_has_texture;
 uniform int u_object_id;
-layout(binding = 0) uniform sampler2D u_base_texture;
+layout(binding = UNIT_BASE_TEXTURE) uniform sampler2D u_base_texture;
 
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;

@@ -3,12 +3,13 @@
 // some sample differs from the pixel's representative G-buffer point: another object, a view
 // depth more than kSameDepth (relative) away or a normal more than 10 degrees off. The shade
 // pass's one shading per pixel is exact for every other pixel.
+#include "common/bindings.glsl"
 #include "passes/sample_match.glsl"
 
-layout(binding = 1) uniform sampler2D u_normal;  // xyz, w = view depth
-layout(binding = 4) uniform isampler2D u_id;     // -1: background
-layout(binding = 6) uniform sampler2DArray u_sample_normal;
-layout(binding = 8) uniform isampler2DArray u_sample_id;
+layout(binding = UNIT_SHADE_NORMAL) uniform sampler2D u_normal;  // xyz, w = view depth
+layout(binding = UNIT_SHADE_ID) uniform isampler2D u_id;     // -1: background
+layout(binding = UNIT_SHADE_SAMPLE_NORMAL) uniform sampler2DArray u_sample_normal;
+layout(binding = UNIT_SHADE_SAMPLE_ID) uniform isampler2DArray u_sample_id;
 uniform int u_samples;
 
 void main() {

@@ -1,8 +1,9 @@
 #version 450 core
 // Summed-area table, pass 2 of 2: one invocation per column and layer adds the row sums of
 // sat_rows.comp down its column, in place.
+#include "common/bindings.glsl"
 layout(local_size_x = 64) in;
-layout(rgba32f, binding = 0) uniform image2DArray u_table;
+layout(rgba32f, binding = IMAGE_SAT_COLUMNS_TABLE) uniform image2DArray u_table;
 
 void main() {
     ivec3 size = imageSize(u_table);

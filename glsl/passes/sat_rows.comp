@@ -2,9 +2,10 @@
 // Summed-area table, pass 1 of 2: one invocation per row and layer writes the running sums of
 // that row of the N x N source into row y + 1 of the (N + 1) x (N + 1) table, whose row 0 and
 // column 0 are zero (so a box sum needs no bounds test). Pass 2 (sat_columns.comp) sums down.
+#include "common/bindings.glsl"
 layout(local_size_x = 64) in;
-layout(rgba32f, binding = 0) uniform readonly image2DArray u_source;
-layout(rgba32f, binding = 1) uniform writeonly image2DArray u_table;
+layout(rgba32f, binding = IMAGE_SAT_SOURCE) uniform readonly image2DArray u_source;
+layout(rgba32f, binding = IMAGE_SAT_TABLE) uniform writeonly image2DArray u_table;
 
 void main() {
     ivec3 size = imageSize(u_source);

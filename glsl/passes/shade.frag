@@ -1,13 +1,14 @@
 #version 450 core
 // The shade pass, one sample per pixel: every pixel's G-buffer point shaded with its own
 // visibility layers (passes/shading.glsl).
+#include "common/bindings.glsl"
 #include "passes/shading.glsl"
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform sampler2D u_normal;
-layout(binding = 2) uniform sampler2D u_albedo;
-layout(binding = 4) uniform isampler2D u_id;  // -1: background
+layout(binding = UNIT_SHADE_POSITION) uniform sampler2D u_position;
+layout(binding = UNIT_SHADE_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_SHADE_ALBEDO) uniform sampler2D u_albedo;
+layout(binding = UNIT_SHADE_ID) uniform isampler2D u_id;  // -1: background
 
 layout(location = 0) out vec4 o_beauty;      // rgb, a = coverage
 layout(location = 1) out vec4 o_visibility;

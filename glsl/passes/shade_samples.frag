@@ -8,17 +8,20 @@
 // sample's point in the world, the distance stretched up to 3x for a differently oriented
 // surface (u_guide 1: depth-guided interpolation), or its own pixel's (u_guide 0: plain nearest
 // pixel, a baseline for comparison).
+#include "common/bindings.glsl"
 #include "passes/sample_match.glsl"
 #include "passes/shading.glsl"
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;  // representative: xyz, w = coverage
-layout(binding = 1) uniform sampler2D u_normal;    // xyz, w = view depth
-layout(binding = 4) uniform isampler2D u_id;       // -1: background
-layout(binding = 5) uniform sampler2DArray u_sample_position;  // one layer per sample
-layout(binding = 6) uniform sampler2DArray u_sample_normal;
-layout(binding = 7) uniform sampler2DArray u_sample_albedo;
-layout(binding = 8) uniform isampler2DArray u_sample_id;
+// Representative: xyz, w = coverage
+layout(binding = UNIT_SHADE_POSITION) uniform sampler2D u_position;
+layout(binding = UNIT_SHADE_NORMAL) uniform sampler2D u_normal;    // xyz, w = view depth
+layout(binding = UNIT_SHADE_ID) uniform isampler2D u_id;       // -1: background
+// One layer per sample
+layout(binding = UNIT_SHADE_SAMPLE_POSITION) uniform sampler2DArray u_sample_position;
+layout(binding = UNIT_SHADE_SAMPLE_NORMAL) uniform sampler2DArray u_sample_normal;
+layout(binding = UNIT_SHADE_SAMPLE_ALBEDO) uniform sampler2DArray u_sample_albedo;
+layout(binding = UNIT_SHADE_SAMPLE_ID) uniform isampler2DArray u_sample_id;
 uniform int u_samples;
 uniform int u_guide;  // 1: depth-guided neighbour; 0: the sample's own pixel
 

@@ -23,7 +23,7 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { GpuLight u_lig
 // of w_k c_k lit_k and w_k c_k over the light's samples k (c_k: the sample's unshadowed
 // contribution cos cos / r^2) and a > 0, written by techniques that sample the light (a = 0
 // from the others).
-layout(binding = 3) uniform sampler2DArray u_visibility;
+layout(binding = UNIT_SHADE_VISIBILITY) uniform sampler2DArray u_visibility;
 uniform int u_light_count;
 // The layer holding the environment's irradiance per pixel (rgb: shadowed, a: unshadowed
 // luminance; written by `exact`), or -1.

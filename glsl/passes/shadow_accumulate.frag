@@ -7,6 +7,7 @@
 // that casts, a sample below the receiver's tangent plane counts as hidden: the object's own
 // (closed) surface hides it, as `exact`'s rays find, though the normal offset lights it; the
 // plane is the drawn triangle's (the geometric normal), which is the surface those rays meet.
+#include "common/bindings.glsl"
 #include "common/caster_flags.glsl"
 #include "common/geometric_normal.glsl"
 #include "common/sample_view.glsl"
@@ -18,10 +19,10 @@ layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
 };
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform sampler2D u_normal;
-layout(binding = 2) uniform sampler2DArrayShadow u_maps;
-layout(binding = 3) uniform isampler2D u_id;
+layout(binding = UNIT_ACCUMULATE_POSITION) uniform sampler2D u_position;
+layout(binding = UNIT_ACCUMULATE_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_ACCUMULATE_MAPS) uniform sampler2DArrayShadow u_maps;
+layout(binding = UNIT_ACCUMULATE_ID) uniform isampler2D u_id;
 
 uniform int u_view_base;
 uniform int u_count;

@@ -8,6 +8,7 @@
 
 #include "renderer/core/error.h"
 #include "renderer/core/memory_limit.h"
+#include "renderer/techniques/css/css_settings.h"
 
 namespace penumbra::app {
 namespace {
@@ -73,7 +74,8 @@ void techniqueTerms(std::string_view t, const Params& p, u64 pixels, std::vector
     } else if (t == "css") {
         const int order = intOr(p, "order", 4);
         const u64 layers = 2 * static_cast<u64>((order + 1) / 2) + 1;
-        const bool mipmap = p.json().value("filter", std::string("sat")) != "sat";
+        const bool mipmap = p.json().contains("filter") && p.getEnum(techniques::css::kFilter) !=
+                                                               techniques::css::FilterChoice::Sat;
         const u64 basis = product({m, m, 16, layers});
         out.push_back(
             {"technique.order",

@@ -19,6 +19,7 @@
 #include "renderer/frame/camera_attributes.h"
 #include "renderer/frame/render_frame.h"
 #include "renderer/gl/debug.h"
+#include "renderer/gl/program.h"
 #include "renderer/output/cryptomatte.h"
 #include "renderer/output/timing.h"
 
@@ -188,7 +189,8 @@ int runRenderJob(const RenderRequest& req) {
     auto context = gl::Context::create(req.gl);
     const gl::ContextInfo& glinfo = context->info();
     gl::enableDebugOutput(req.gl.debug);
-    checkGlLimits(in.first, in.params, glinfo);
+    gl::setStrictUniforms(req.gl.debug);  // a uniform no shader declares is a bug: fail
+    checkGlLimits(in.first, in.info, in.params, glinfo);
     checkMemoryBudget(in.first, in.info.name, in.params, &glinfo);  // exit 2 before allocating
 
     const Tally tally = renderFrames(req, in, glinfo);  // 3.

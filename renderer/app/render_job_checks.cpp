@@ -46,7 +46,8 @@ void checkTechniqueOverrides(const techniques::TechniqueInfo& info, const Render
     }
 }
 
-void checkGlLimits(const scene::Scene& s, const Params& params, const gl::ContextInfo& info) {
+void checkGlLimits(const scene::Scene& s, const techniques::TechniqueInfo& technique,
+                   const Params& params, const gl::ContextInfo& info) {
     const std::string where = s.path.string() + ": ";
     const int max = std::min(info.max_texture_size, info.max_renderbuffer_size);
     if (s.image.width > max)
@@ -55,10 +56,14 @@ void checkGlLimits(const scene::Scene& s, const Params& params, const gl::Contex
     if (s.image.height > max)
         throw InputError(where + "image.height: " + std::to_string(s.image.height) +
                          " exceeds this GL's limit of " + std::to_string(max));
-    if (params.json().contains("map_size") && params.getInt("map_size") > info.max_texture_size)
-        throw InputError(
-            where + "technique.map_size: " + std::to_string(params.getInt("map_size")) +
-            " exceeds this GL's texture limit of " + std::to_string(info.max_texture_size));
+    for (const ParamSpec& spec : technique.params) {
+        if (spec.limited_by != GlLimit::MaxTextureSize) continue;
+        const int value = params.getInt(spec.key);
+        if (value > info.max_texture_size)
+            throw InputError(where + "technique." + std::string(spec.key) + ": " +
+                             std::to_string(value) + " exceeds this GL's texture limit of " +
+                             std::to_string(info.max_texture_size));
+    }
     if (s.lights.size() > static_cast<size_t>(info.max_array_layers))
         throw InputError(where + "lights: more lights than this GL's array layers allow");
 }

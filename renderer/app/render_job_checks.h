@@ -23,7 +23,9 @@ Params resolveFor(const techniques::TechniqueInfo& info, const scene::Scene& s);
 // Each -D technique.KEY=VALUE checked alone first, so that its error names the flag.
 void checkTechniqueOverrides(const techniques::TechniqueInfo& info, const RenderRequest& req);
 
-// Image size, map_size and light count against INFO's limits: InputError naming the key.
-void checkGlLimits(const scene::Scene& s, const Params& params, const gl::ContextInfo& info);
+// Image size, the technique's parameters its table limits by GL (ParamSpec::limited_by) and
+// light count against INFO's limits: InputError naming the key.
+void checkGlLimits(const scene::Scene& s, const techniques::TechniqueInfo& technique,
+                   const Params& params, const gl::ContextInfo& info);
 
 }  // namespace penumbra::app

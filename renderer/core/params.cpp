@@ -1,6 +1,7 @@
 // Parameter tables and their validation: see params.h.
 #include "renderer/core/params.h"
 
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,26 +12,15 @@
 namespace penumbra {
 namespace {
 
-bool choiceAllowed(std::string_view choices, std::string_view value) {
-    size_t start = 0;
-    while (start <= choices.size()) {
-        size_t bar = choices.find('|', start);
-        if (bar == std::string_view::npos) bar = choices.size();
-        if (choices.substr(start, bar - start) == value) return true;
-        start = bar + 1;
-    }
+bool choiceAllowed(std::span<const std::string_view> choices, std::string_view value) {
+    for (std::string_view c : choices)
+        if (c == value) return true;
     return false;
 }
 
-std::string choiceList(std::string_view choices) {
-    std::string s(choices);
-    for (char& ch : s)
-        if (ch == '|') ch = ',';
+std::string choiceList(std::span<const std::string_view> choices) {
     std::string out;
-    for (char ch : s) {
-        out += ch;
-        if (ch == ',') out += ' ';
-    }
+    for (std::string_view c : choices) out += (out.empty() ? "" : ", ") + std::string(c);
     return out;
 }
 
@@ -54,6 +44,37 @@ std::string_view paramTypeName(ParamType type) {
             return "enum";
         case ParamType::String:
             return "string";
+    }
+    return "?";
+}
+
+std::string_view paramGpuKindName(ParamGpu gpu) {
+    switch (gpu) {
+        case ParamGpu::Host:
+            return "host";
+        case ParamGpu::Uniform:
+            return "uniform";
+        case ParamGpu::Define:
+            return "define";
+    }
+    return "?";
+}
+
+std::string paramGpuName(const ParamSpec& s) {
+    if (s.gpu == ParamGpu::Host) return "";
+    if (!s.gpu_name.empty()) return std::string(s.gpu_name);
+    if (s.gpu == ParamGpu::Uniform) return "u_" + std::string(s.key);
+    std::string macro(s.key);
+    for (char& ch : macro) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    return macro;
+}
+
+std::string_view glLimitName(GlLimit limit) {
+    switch (limit) {
+        case GlLimit::None:
+            return "";
+        case GlLimit::MaxTextureSize:
+            return "GL_MAX_TEXTURE_SIZE";
     }
     return "?";
 }
@@ -83,14 +104,11 @@ nlohmann::json paramSpecJson(const ParamSpec& s) {
     if (s.type == ParamType::Float) j["range"] = {s.min, s.max};
     if (s.type == ParamType::Enum) {
         j["choices"] = nlohmann::json::array();
-        size_t start = 0;
-        while (start <= s.choices.size()) {
-            size_t bar = s.choices.find('|', start);
-            if (bar == std::string_view::npos) bar = s.choices.size();
-            j["choices"].push_back(std::string(s.choices.substr(start, bar - start)));
-            start = bar + 1;
-        }
+        for (std::string_view c : s.choices) j["choices"].push_back(std::string(c));
     }
+    j["gpu"] = paramGpuKindName(s.gpu);
+    if (s.gpu != ParamGpu::Host) j["glsl"] = paramGpuName(s);
+    if (s.limited_by != GlLimit::None) j["limited_by"] = glLimitName(s.limited_by);
     return j;
 }
 
@@ -130,9 +148,11 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
                 names.push_back(s.key);
             }
             const std::string near = nearestName(key, names);
-            throw InputError(prefix + key + ": unknown parameter for technique '" +
-                             block.value("name", std::string("?")) + "' (" +
-                             (near.empty() ? "" : "did you mean '" + near + "'? ") +
+            const auto name = block.find("name");
+            const std::string technique =
+                name != block.end() && name->is_string() ? name->get<std::string>() : "?";
+            throw InputError(prefix + key + ": unknown parameter for technique '" + technique +
+                             "' (" + (near.empty() ? "" : "did you mean '" + near + "'? ") +
                              "known: " + (allowed.empty() ? "none" : allowed) + ")");
         }
     }

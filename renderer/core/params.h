@@ -2,7 +2,10 @@
 // -D overrides, the scene's technique block, `penumbra techniques`, validation and outputs.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -12,14 +15,66 @@ namespace penumbra {
 
 enum class ParamType { Int, Float, Bool, Enum, String };
 
+// How a parameter reaches the GPU: read on the CPU only (Host), uploaded as a uniform of the
+// technique's programs (Uniform; setParamUniforms in renderer/gl/param_uniforms.h), or
+// injected as a #define when a program is built (Define; paramDefines).
+enum class ParamGpu { Host, Uniform, Define };
+
+// A GL limit a parameter's value must stay within (checked against the context before a render).
+enum class GlLimit { None, MaxTextureSize };
+
 struct ParamSpec {
     std::string_view key;
     ParamType type;
-    double def = 0;             // Int, Float, Bool (0/1)
-    double min = 0, max = 0;    // Int, Float: inclusive range
-    std::string_view choices;   // Enum: "a|b|c"
+    double def = 0;                             // Int, Float, Bool (0/1)
+    double min = 0, max = 0;                    // Int, Float: inclusive range
+    std::span<const std::string_view> choices;  // Enum: the names, in the C++ enum's order
     std::string_view enum_def;  // Enum: the default choice; String: the default text
     std::string_view doc;       // one line
+    ParamGpu gpu = ParamGpu::Host;
+    std::string_view gpu_name;  // Uniform: GLSL name ("" = "u_<key>"); Define: macro ("" = KEY)
+    GlLimit limited_by = GlLimit::None;
+
+    // The same parameter, uploaded as the uniform NAME (by default "u_<key>").
+    constexpr ParamSpec uniform(std::string_view name = {}) const {
+        ParamSpec s = *this;
+        s.gpu = ParamGpu::Uniform;
+        s.gpu_name = name;
+        return s;
+    }
+    // The same parameter, injected as `#define NAME value` (by default the key in capitals).
+    constexpr ParamSpec define(std::string_view name = {}) const {
+        ParamSpec s = *this;
+        s.gpu = ParamGpu::Define;
+        s.gpu_name = name;
+        return s;
+    }
+    // The same parameter, bounded by the GL limit LIMIT as well as by its range.
+    constexpr ParamSpec limitedBy(GlLimit limit) const {
+        ParamSpec s = *this;
+        s.limited_by = limit;
+        return s;
+    }
+};
+
+// The GLSL name of a Uniform or Define parameter (see ParamSpec::gpu_name); "" for Host.
+std::string paramGpuName(const ParamSpec& spec);
+std::string_view paramGpuKindName(ParamGpu gpu);
+std::string_view glLimitName(GlLimit limit);
+
+// An Enum parameter read as the C++ enum E: NAMES are its choices in enumerator order (the
+// first names E's value 0). The table's spec is made from the key (enumParam) and the technique
+// reads it with Params::getEnum, so the choices, the enum and the comparisons cannot drift: a
+// misspelled enumerator does not compile, and the names are the ones users see and the README
+// lists (tests/cli/techniques_readme.sh).
+template <class E, std::size_t N>
+struct EnumKey {
+    std::string_view key;
+    std::array<std::string_view, N> names;
+
+    constexpr std::string_view name(E value) const {
+        return names[static_cast<std::size_t>(value)];
+    }
 };
 
 constexpr ParamSpec intParam(std::string_view key, int def, int min, int max,
@@ -33,14 +88,42 @@ constexpr ParamSpec floatParam(std::string_view key, double def, double min, dou
 constexpr ParamSpec boolParam(std::string_view key, bool def, std::string_view doc) {
     return {key, ParamType::Bool, def ? 1.0 : 0.0, 0, 1, {}, {}, doc};
 }
-constexpr ParamSpec enumParam(std::string_view key, std::string_view def, std::string_view choices,
-                              std::string_view doc) {
-    return {key, ParamType::Enum, 0, 0, 0, choices, def, doc};
+
+// The Enum parameter of KEY (static storage: the spec points at its names) with default DEF.
+// Empty or repeated names fail to compile where the table is constexpr.
+template <class E, std::size_t N>
+constexpr ParamSpec enumParam(const EnumKey<E, N>& key, E def, std::string_view doc) {
+    static_assert(N > 0, "an enum parameter needs choices");
+    for (std::size_t i = 0; i < N; ++i) {
+        if (key.names[i].empty() || key.names[i].find('|') != std::string_view::npos)
+            throw "enumParam: a choice is empty or holds '|'";
+        for (std::size_t j = 0; j < i; ++j)
+            if (key.names[i] == key.names[j]) throw "enumParam: a choice is listed twice";
+    }
+    return {key.key,
+            ParamType::Enum,
+            0,
+            0,
+            0,
+            std::span<const std::string_view>(key.names),
+            key.name(def),
+            doc};
 }
 
 // A free-form text value (e.g. a file path); DEF may be empty.
 constexpr ParamSpec stringParam(std::string_view key, std::string_view def, std::string_view doc) {
     return {key, ParamType::String, 0, 0, 0, {}, def, doc};
+}
+
+// The rows of A followed by those of B: a technique's table that includes rows declared where
+// they are read (e.g. the environment lights' in renderer/techniques/environment_lights.h).
+template <std::size_t N, std::size_t M>
+constexpr std::array<ParamSpec, N + M> joinParams(const std::array<ParamSpec, N>& a,
+                                                  const std::array<ParamSpec, M>& b) {
+    std::array<ParamSpec, N + M> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+    for (std::size_t i = 0; i < M; ++i) out[N + i] = b[i];
+    return out;
 }
 
 std::string_view paramTypeName(ParamType type);
@@ -56,7 +139,18 @@ public:
     int getInt(std::string_view key) const;
     double getFloat(std::string_view key) const;
     bool getBool(std::string_view key) const;
+    // An Enum's chosen name or a String's text.
     std::string getString(std::string_view key) const;
+    // Enum KEY as its C++ enumerator.
+    template <class E, std::size_t N>
+    E getEnum(const EnumKey<E, N>& key) const {
+        const std::string value = getString(key.key);
+        for (std::size_t i = 0; i < N; ++i)
+            if (key.names[i] == value) return static_cast<E>(i);
+        throw std::logic_error("parameter '" + std::string(key.key) + "': '" + value +
+                               "' is no name of its enum (the table's spec is not made from "
+                               "this key)");
+    }
     const nlohmann::json& json() const { return values_; }
 
 private:

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <initializer_list>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -24,7 +25,23 @@ std::string shaderSource(std::string_view name);
 Program buildProgram(std::string_view label, std::initializer_list<std::string_view> stages,
                      const Defines& defines = {});
 
-// Uniform setters by name (ignored when the uniform is inactive).
+// The names of the embedded shaders (glsl/, relative), for tests that read them all.
+std::vector<std::string_view> embeddedShaderNames();
+
+// The names SOURCE declares as plain uniforms (`uniform T name;`, arrays by their name; not
+// uniform blocks), whatever preprocessor branch they sit in.
+std::set<std::string> declaredUniforms(std::string_view source);
+// The uniforms declared by the sources PROGRAM was built from (empty for a program not made by
+// buildProgram).
+const std::set<std::string>& programUniforms(const Program& program);
+
+// Strict uniforms (process-wide; off by default): setUniform on a name that PROGRAM's shaders do
+// not declare throws std::logic_error instead of being ignored. A declared uniform the compiler
+// optimised out in one variant stays a silent no-op. On under --gl-debug and in the GL tests.
+void setStrictUniforms(bool strict);
+bool strictUniforms();
+
+// Uniform setters by name (ignored when the uniform is inactive; see setStrictUniforms).
 void setUniform(const Program& p, const char* name, int v);
 void setUniform(const Program& p, const char* name, float v);
 void setUniform(const Program& p, const char* name, const glm::vec2& v);

@@ -1,11 +1,14 @@
-// Buffer binding points shared with GLSL (glsl/common/bindings.glsl defines the same numbers).
+// Binding points shared with GLSL: glsl/common/bindings.glsl is the one source (its #defines
+// are read by both compilers); the constants below are its numbers under C++ names.
 #pragma once
 
+#include "glsl/common/bindings.glsl"
+
 namespace penumbra::passes {
-constexpr unsigned kBindingSampleViews = 0;    // SSBO of SampleView (shadow_maps)
-constexpr unsigned kBindingLights = 1;         // SSBO of GpuLight (shade)
-constexpr unsigned kBindingSampleLookups = 2;  // UBO of SampleLookup (shadow tests)
-constexpr unsigned kBindingCasterFlags = 6;    // SSBO of int per scene object: 1 casts (shade)
-constexpr unsigned kUnitGeometricNormal = 15;  // texture unit: GBuffer::geometricNormal()
-constexpr int kMaxSampleLookups = 1024;        // views per light: N = 32 squared
+constexpr unsigned kBindingSampleViews = BINDING_SAMPLE_VIEWS;      // SSBO of SampleView
+constexpr unsigned kBindingLights = BINDING_LIGHTS;                 // SSBO of GpuLight (shade)
+constexpr unsigned kBindingSampleLookups = BINDING_SAMPLE_LOOKUPS;  // UBO of SampleLookup
+constexpr unsigned kBindingCasterFlags = BINDING_CASTER_FLAGS;      // SSBO of int per object
+constexpr unsigned kUnitGeometricNormal = UNIT_GEOMETRIC_NORMAL;  // GBuffer::geometricNormal()
+constexpr int kMaxSampleLookups = MAX_SAMPLE_LOOKUPS;               // views per light
 }  // namespace penumbra::passes

@@ -140,22 +140,31 @@ size_t GpuScene::triangleCount() const {
 
 void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
                     int texture_unit) const {
+    // Each program gets the per-object uniforms its shaders declare: a depth pass has no
+    // normals or colours (strict uniforms would refuse them, see gl::setStrictUniforms).
+    const auto& declared = gl::programUniforms(program);
+    const bool normals = declared.count("u_normal_matrix") > 0;
+    const bool ids = declared.count("u_object_id") > 0;
+    const bool colours = declared.count("u_base_color") > 0;
+    const bool textures = declared.count("u_has_texture") > 0;
     for (const auto& o : objects_) {
         if (filter == Filter::Casters && !scene::castsShadow(o.shadow)) continue;
         if (filter == Filter::Receivers && !scene::receivesShadow(o.shadow)) continue;
         if (filter == Filter::ReceiversOnly && o.shadow != scene::ShadowRole::Receiver) continue;
         gl::setUniform(program, "u_model", o.transform);
-        gl::setUniform(program, "u_normal_matrix", glm::mat3(glm::inverseTranspose(o.transform)));
-        gl::setUniform(program, "u_object_id", o.id);
+        if (normals)
+            gl::setUniform(program, "u_normal_matrix",
+                           glm::mat3(glm::inverseTranspose(o.transform)));
+        if (ids) gl::setUniform(program, "u_object_id", o.id);
         glBindVertexArray(o.model->vao.id());
         for (const auto& d : o.model->draws) {
             size_t m = static_cast<size_t>(d.material) < o.model->base_colors.size()
                            ? static_cast<size_t>(d.material)
                            : 0;
-            gl::setUniform(program, "u_base_color", o.model->base_colors[m]);
+            if (colours) gl::setUniform(program, "u_base_color", o.model->base_colors[m]);
             int tex = o.model->material_texture[m];
             if (!d.has_uvs) tex = -1;
-            gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
+            if (textures) gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
             if (tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
                 glBindTextureUnit(static_cast<GLuint>(texture_unit),
                                   o.model->textures[static_cast<size_t>(tex)].id());

@@ -10,6 +10,7 @@
 
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/bindings.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::passes {
@@ -72,11 +73,12 @@ public:
 
     // Receivers: role receiver or both; ReceiversOnly: role receiver.
     enum class Filter { All, Casters, Receivers, ReceiversOnly };
-    // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniforms
-    // "u_model", "u_normal_matrix", "u_object_id", "u_base_color", "u_has_texture" and binds
-    // the base colour texture to unit TEXTURE_UNIT. INSTANCES > 1 draws instanced.
+    // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniform "u_model"
+    // and those of "u_normal_matrix", "u_object_id", "u_base_color", "u_has_texture" that
+    // PROGRAM's shaders declare, and binds the base colour texture to unit TEXTURE_UNIT.
+    // INSTANCES > 1 draws instanced.
     void draw(const gl::Program& program, Filter filter, int instances = 1,
-              int texture_unit = 0) const;
+              int texture_unit = UNIT_BASE_TEXTURE) const;
 
 private:
     std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;

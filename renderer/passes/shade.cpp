@@ -1,6 +1,7 @@
 // The shade pass: see shade.h.
 #include "renderer/passes/shade.h"
 
+#include <cstddef>
 #include <string>
 
 #include "renderer/core/error.h"
@@ -13,6 +14,9 @@ struct GpuLight {  // std430 mirror of GpuLight in glsl/passes/shading.glsl
     glm::vec4 forward;
     glm::vec4 radiance;
 };
+static_assert(sizeof(GpuLight) == GPU_LIGHT_SIZE, "GpuLight: std430 size");
+static_assert(offsetof(GpuLight, forward) == 64 && offsetof(GpuLight, radiance) == 80,
+              "GpuLight: std430 offsets (vec4 members, 16-byte aligned)");
 }  // namespace
 
 Shade::Shade(int width, int height, int samples, const gl::Buffer& caster_flags)
@@ -63,11 +67,11 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(program_.id());
-    glBindTextureUnit(0, gbuffer.position().id());
-    glBindTextureUnit(1, gbuffer.normal().id());
-    glBindTextureUnit(2, gbuffer.albedo().id());
-    glBindTextureUnit(3, visibility_layers.id());
-    glBindTextureUnit(4, gbuffer.id().id());
+    glBindTextureUnit(UNIT_SHADE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(UNIT_SHADE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(UNIT_SHADE_ALBEDO, gbuffer.albedo().id());
+    glBindTextureUnit(UNIT_SHADE_VISIBILITY, visibility_layers.id());
+    glBindTextureUnit(UNIT_SHADE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     gl::setUniform(program_, "u_light_count", static_cast<int>(lights.size()));
@@ -88,15 +92,15 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glBindTextureUnit(0, gbuffer.position().id());
-    glBindTextureUnit(1, gbuffer.normal().id());
-    glBindTextureUnit(2, gbuffer.albedo().id());
-    glBindTextureUnit(3, visibility_layers.id());
-    glBindTextureUnit(4, gbuffer.id().id());
-    glBindTextureUnit(5, samples.position().id());
-    glBindTextureUnit(6, samples.normal().id());
-    glBindTextureUnit(7, samples.albedo().id());
-    glBindTextureUnit(8, samples.id().id());
+    glBindTextureUnit(UNIT_SHADE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(UNIT_SHADE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(UNIT_SHADE_ALBEDO, gbuffer.albedo().id());
+    glBindTextureUnit(UNIT_SHADE_VISIBILITY, visibility_layers.id());
+    glBindTextureUnit(UNIT_SHADE_ID, gbuffer.id().id());
+    glBindTextureUnit(UNIT_SHADE_SAMPLE_POSITION, samples.position().id());
+    glBindTextureUnit(UNIT_SHADE_SAMPLE_NORMAL, samples.normal().id());
+    glBindTextureUnit(UNIT_SHADE_SAMPLE_ALBEDO, samples.albedo().id());
+    glBindTextureUnit(UNIT_SHADE_SAMPLE_ID, samples.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     // 1. Stencil 1 where a sample differs from the representative (colour untouched).

@@ -152,10 +152,10 @@ void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batc
                               int count, const scene::RectLight& light, const ShadowTestSettings& s,
                               const gl::Buffer& caster_flags) {
     glUseProgram(program_.id());
-    glBindTextureUnit(0, gbuffer.position().id());
-    glBindTextureUnit(1, gbuffer.normal().id());
-    glBindTextureUnit(2, batch.depth().id());
-    glBindTextureUnit(3, gbuffer.id().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_MAPS, batch.depth().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags.id());
     gl::setUniform(program_, "u_view_base", view_base);

@@ -11,6 +11,7 @@
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/bindings.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
@@ -27,6 +28,7 @@ struct SampleView {
     glm::vec4 frustum{0.0f};       // (left, bottom, 1/width, 1/height) at distance 1
     glm::vec4 depth{0.0f};         // (1/(far - near), weight, 0, 0)
 };
+static_assert(sizeof(SampleView) == SAMPLE_VIEW_SIZE, "SampleView: std430 size (mat4, 6 vec4)");
 static_assert(sizeof(SampleView) == 160);
 
 // Binds FBO with a SIZE x SIZE viewport for a depth-tested (LESS, writing), unblended,

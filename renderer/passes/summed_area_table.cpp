@@ -1,6 +1,8 @@
 // Summed-area tables by compute: see summed_area_table.h.
 #include "renderer/passes/summed_area_table.h"
 
+#include "renderer/passes/bindings.h"
+
 namespace penumbra::passes {
 
 SummedAreaTable::SummedAreaTable(int size, int layers, const char* label)
@@ -16,12 +18,13 @@ SummedAreaTable::SummedAreaTable(int size, int layers, const char* label)
 void SummedAreaTable::build(const gl::Texture& source) {
     const GLuint groups = static_cast<GLuint>((size_ + 1 + 63) / 64);
     glUseProgram(rows_.id());
-    glBindImageTexture(0, source.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(IMAGE_SAT_SOURCE, source.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(IMAGE_SAT_TABLE, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(groups, static_cast<GLuint>(layers_), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glUseProgram(columns_.id());
-    glBindImageTexture(0, table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(IMAGE_SAT_COLUMNS_TABLE, table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                       GL_RGBA32F);
     glDispatchCompute(groups, static_cast<GLuint>(layers_), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glUseProgram(0);

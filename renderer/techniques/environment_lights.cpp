@@ -64,7 +64,7 @@ EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s
     scene::FitSettings settings;
     settings.threshold = p.getFloat("env_threshold");
     settings.max_lights = p.getInt("env_lights");
-    settings.square = p.getString("env_shape") == "square";
+    settings.square = p.getEnum(kEnvShape) == EnvShape::Square;
     const int face_size = p.getInt("env_face_size");
     const std::string file = p.getString("env_lights_file");
     scene::LightFit fit;

@@ -3,11 +3,35 @@
 // reference renders with one hard shadow map each. Both are placed far outside the scene.
 #pragma once
 
+#include <array>
+
 #include "renderer/core/params.h"
 #include "renderer/scene/light_fitting.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::techniques {
+
+enum class EnvShape { Square, Rect };
+inline constexpr EnumKey<EnvShape, 2> kEnvShape{"env_shape", {"square", "rect"}};
+
+// The rows fittedEnvironmentLights reads; `css` ends its table with them.
+inline constexpr std::array kFittedEnvironmentParams = {
+    floatParam("env_threshold", 0.1, 0.001, 0.999,
+               "environment: fitting threshold t (enlarge while E_added / E_enlarged > t)"),
+    intParam("env_lights", 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
+    enumParam(kEnvShape, EnvShape::Square, "environment: shape of the fitted lights"),
+    intParam("env_face_size", 32, 4, 256, "environment: cube face resolution for the fitting"),
+    stringParam("env_lights_file", "",
+                "environment: lights from a `penumbra fit-lights` JSON (relative to the scene "
+                "file) instead of fitting; empty = fit"),
+};
+
+// The row sampledEnvironmentLights reads besides the technique's `seed`; `reference` ends its
+// table with it.
+inline constexpr std::array kSampledEnvironmentParams = {
+    intParam("env_samples", 512, 1, 1024,
+             "environment: directions sampled by energy, one hard shadow map each"),
+};
 
 // Light K of a fit as a rect light: at distance 10 x the camera's far plane from the origin,
 // facing it, sized to the fitted angular extent, carrying the light's energy; the map turned by

@@ -45,7 +45,8 @@ private:
 
 // The parameter rows every shadow-map-sampling technique shares (hard, reference).
 constexpr ParamSpec mapSizeParam(int def) {
-    return intParam("map_size", def, 16, 16384, "shadow map width and height in texels");
+    return intParam("map_size", def, 16, 16384, "shadow map width and height in texels")
+        .limitedBy(GlLimit::MaxTextureSize);
 }
 constexpr ParamSpec kNormalOffsetParam =
     floatParam("normal_offset", 1.5, 0.0, 16.0,

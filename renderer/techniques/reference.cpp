@@ -12,17 +12,17 @@
 namespace penumbra::techniques {
 namespace {
 
-constexpr std::array kReferenceParams = {
-    intParam("samples", 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
-    boolParam("jitter", true, "jitter each sample inside its stratum (false: stratum centres)"),
-    intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
-    mapSizeParam(1024),
-    intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
-    kNormalOffsetParam,
-    kDepthBiasParam,
-    intParam("env_samples", 512, 1, 1024,
-             "environment: directions sampled by energy, one hard shadow map each"),
-};
+constexpr std::array kReferenceParams = joinParams(
+    std::array{
+        intParam("samples", 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
+        boolParam("jitter", true, "jitter each sample inside its stratum (false: stratum centres)"),
+        intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
+        mapSizeParam(1024),
+        intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
+        kNormalOffsetParam,
+        kDepthBiasParam,
+    },
+    kSampledEnvironmentParams);
 
 class Reference final : public Technique {
 public:

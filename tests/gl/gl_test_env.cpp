@@ -6,6 +6,7 @@
 
 #include "renderer/core/light_geometry.h"
 #include "renderer/gl/debug.h"
+#include "renderer/gl/program.h"
 #include "renderer/techniques/technique.h"
 
 // Under AddressSanitizer, leak checking is off for the GL tests: Mesa's drivers keep
@@ -28,6 +29,7 @@ const gl::ContextInfo& glInfo() {
     if (!context()) {
         context() = gl::Context::create({});
         gl::enableDebugOutput(false);
+        gl::setStrictUniforms(true);  // a uniform no shader declares fails the test
     }
     return context()->info();
 }

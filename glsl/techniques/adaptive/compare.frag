@@ -3,6 +3,7 @@
 // or 7) at every u_stride-th G-buffer pixel in x and y. Agreeing pixels are discarded, so an
 // occlusion query counts the disagreeing ones. Mode 1 counts instead the pixels that any of
 // four views shadows (the shadow region the error metric divides by).
+#include "techniques/adaptive/bindings.glsl"
 #include "common/sample_view.glsl"
 
 layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
@@ -10,14 +11,15 @@ layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
 };
 
 // Per screen tile and comparison, the disagreeing pixels (the local metric; u_tile_size 0: off).
-layout(std430, binding = 7) buffer TileCounts {
+layout(std430, binding = ADAPTIVE_BINDING_COMPARE_TILE_COUNTS) buffer TileCounts {
     uint u_tile_counts[];
 };
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform sampler2D u_normal;
-layout(binding = 2) uniform sampler2DArray u_maps;  // raw linear depths (no compare sampler)
+layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
+layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
+// Raw linear depths (no compare sampler)
+layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;
 
 uniform int u_view_a;     // the two views (= layers) compared
 uniform int u_view_b;

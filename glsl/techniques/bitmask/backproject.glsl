@@ -8,13 +8,17 @@
 // On a receiver that also casts, the light's part below its tangent plane counts as hidden
 // (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
 // area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
+#include "techniques/bitmask/bindings.glsl"
 #if MICRORECTS
-layout(binding = 9) uniform sampler2D u_rect_extent;  // level-0 texels x0, y0, x1, y1
-layout(binding = 10) uniform sampler2D u_rect_depth;
+// Level-0 texels x0, y0, x1, y1
+layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_extent;
+layout(binding = BITMASK_UNIT_VISIBILITY_RECT_DEPTH) uniform sampler2D u_rect_depth;
 #endif
 #if BITMASK
-layout(binding = 6) uniform usampler2D u_masks;  // rows 0-1: x >= u words, rows 2-3: y >= v
-layout(binding = 13) uniform sampler2D u_samples;  // sample k at texel (k, 0): (u, v)
+// Rows 0-1: x >= u words, rows 2-3: y >= v
+layout(binding = BITMASK_UNIT_VISIBILITY_MASKS) uniform usampler2D u_masks;
+// Sample k at texel (k, 0): (u, v)
+layout(binding = BITMASK_UNIT_VISIBILITY_SAMPLES) uniform sampler2D u_samples;
 uniform int u_mask_resolution;
 uniform float u_sample_count;
 #else

@@ -2,6 +2,7 @@
 // `bitmask` pass 1 (Schwarz & Stamminger, Fig. 3 step 1): per pixel, the search area refined
 // by its depth range, the class (lit and umbra need no back-projection) and the fractional
 // level that meets the pixel's budget, written to the search-area and LOQ maps.
+#include "techniques/bitmask/bindings.glsl"
 #include "techniques/bitmask/search.glsl"
 
 uniform int u_refine_steps;
@@ -10,7 +11,8 @@ uniform int u_budget_edge;    // b_mo at the corners with the falloff, where the
 uniform int u_budget_falloff;
 uniform int u_budget_map_on;  // 1: u_budget_map moves b_mo toward u_budget_edge
 uniform int u_grow_query;     // 1: grow query areas to the budget level's texels
-layout(binding = 12) uniform sampler2D u_budget_map;  // v in [0, 1], stretched over the image
+// v in [0, 1], stretched over the image
+layout(binding = BITMASK_UNIT_CLASSIFY_BUDGET_MAP) uniform sampler2D u_budget_map;
 
 layout(location = 0) out vec4 o_area;  // level-0 texels (x0, y0, x1, y1)
 layout(location = 1) out vec4 o_loq;   // (level or -1, class, budget, 0)

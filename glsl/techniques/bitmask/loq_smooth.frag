@@ -3,8 +3,10 @@
 // of the LOQ map. Back-projecting pixels average their fractional levels with Gaussian weights
 // along u_direction; the kernel stops at the first pixel that needs no back-projection or lies
 // across a depth discontinuity. Other pixels pass through.
-layout(binding = 0) uniform sampler2D u_loq;     // (level or -1, class, budget, 0)
-layout(binding = 1) uniform sampler2D u_normal;  // w: view depth
+#include "techniques/bitmask/bindings.glsl"
+// (level or -1, class, budget, 0)
+layout(binding = BITMASK_UNIT_SMOOTH_LOQ) uniform sampler2D u_loq;
+layout(binding = BITMASK_UNIT_SMOOTH_NORMAL) uniform sampler2D u_normal;  // w: view depth
 uniform ivec2 u_direction;
 uniform int u_radius;
 uniform float u_depth_tolerance;  // relative view-depth step that counts as a discontinuity

@@ -3,7 +3,9 @@
 // triangles whose masks are ANDs of three edge-table entries (the samples left of each edge).
 // A quad counts when all four corners lie in front of the receiver. Needs search.glsl and
 // backproject.glsl's onLight(), maskVisibility() and addBelowHorizon().
-layout(binding = 11) uniform usampler2D u_edges;  // (offset bin, 2 * angle bin + word half)
+#include "techniques/bitmask/bindings.glsl"
+// (offset bin, 2 * angle bin + word half)
+layout(binding = BITMASK_UNIT_VISIBILITY_EDGES) uniform usampler2D u_edges;
 uniform int u_edge_angles;
 uniform int u_edge_offsets;
 

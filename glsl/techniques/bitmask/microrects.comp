@@ -7,12 +7,13 @@
 // neighbours (2X-1, 2Y), (2X, 2Y-1), (2X-1, 2Y-1) that their own pass 1 left. Extent: the
 // bounding rectangle of the merged extents (level-0 texels, inclusive; x0 > x1 = no caster);
 // depth: their minimum. Level 0 (u_from_hsm = 1): one micropatch per HSM level-0 texel.
+#include "techniques/bitmask/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rg32f, binding = 0) uniform readonly image2D u_hsm0;
-layout(rgba32f, binding = 1) uniform readonly image2D u_extent_in;
-layout(r32f, binding = 2) uniform readonly image2D u_depth_in;
-layout(rgba32f, binding = 3) uniform writeonly image2D u_extent_out;
-layout(r32f, binding = 4) uniform writeonly image2D u_depth_out;
+layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_HSM0) uniform readonly image2D u_hsm0;
+layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_IN) uniform readonly image2D u_extent_in;
+layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_IN) uniform readonly image2D u_depth_in;
+layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_OUT) uniform writeonly image2D u_extent_out;
+layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_OUT) uniform writeonly image2D u_depth_out;
 uniform int u_from_hsm;
 uniform float u_empty;  // the distance of texels without casters
 

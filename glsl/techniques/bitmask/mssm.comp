@@ -6,9 +6,10 @@
 // 0, h, 2h, 3h (h = 2^(u_layer - 1)) cover both, so a pass costs one dispatch for two layers.
 // With u_from_hsm, the layers above 0 read the HSM level directly and layer 0 is never
 // written: the YSM queries its MSSM part only for extents of 3 texels or more (layer >= 1).
+#include "techniques/bitmask/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rg32f, binding = 0) uniform readonly image2D u_hsm_level;
-layout(rg32f, binding = 1) uniform image2DArray u_mssm;
+layout(rg32f, binding = BITMASK_IMAGE_MSSM_HSM_LEVEL) uniform readonly image2D u_hsm_level;
+layout(rg32f, binding = BITMASK_IMAGE_MSSM) uniform image2DArray u_mssm;
 uniform int u_layer;
 uniform bool u_pair;
 uniform bool u_from_hsm;

@@ -2,19 +2,23 @@
 // shadow-map area that the light pyramid through it cuts at a depth, the depth range of an
 // area from the HSM, MSSM or YSM, and the budget's level. Coordinates: window (x/z, y/z at the
 // light's centre), texels of level 0 (window - lo) / texel. Needs ACCEL 0 HSM, 1 MSSM, 2 YSM.
+#include "techniques/bitmask/bindings.glsl"
 #define CLASS_LIT 0
 #define CLASS_PENUMBRA 1
 #define CLASS_UMBRA 2
 
 #include "common/geometric_normal.glsl"
 
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform sampler2D u_normal;
-layout(binding = 2) uniform isampler2D u_id;
-layout(binding = 3) uniform sampler2D u_receives;  // per object id: (receives, casts), 0 or 1
-layout(binding = 4) uniform sampler2D u_hsm;       // (min, max) distance, mip pyramid
+layout(binding = BITMASK_UNIT_SEARCH_POSITION) uniform sampler2D u_position;
+layout(binding = BITMASK_UNIT_SEARCH_NORMAL) uniform sampler2D u_normal;
+layout(binding = BITMASK_UNIT_SEARCH_ID) uniform isampler2D u_id;
+// Per object id: (receives, casts), 0 or 1
+layout(binding = BITMASK_UNIT_SEARCH_RECEIVES) uniform sampler2D u_receives;
+// (min, max) distance, mip pyramid
+layout(binding = BITMASK_UNIT_SEARCH_HSM) uniform sampler2D u_hsm;
 #if ACCEL != 0
-layout(binding = 5) uniform sampler2DArray u_mssm;  // layer k: 2^k x 2^k neighbourhoods
+// Layer k: 2^k x 2^k neighbourhoods
+layout(binding = BITMASK_UNIT_SEARCH_MSSM) uniform sampler2DArray u_mssm;
 uniform int u_mssm_base;                            // the HSM level that is MSSM layer 0
 #endif
 

@@ -4,12 +4,13 @@
 // plane, umbra 0, penumbra by back-projection at the level, or at floor and ceiling blended by
 // the fraction (BLEND 1). Diagnostics: level, budget, micro-occluders back-projected, class;
 // Table 2 statistics summed in the Stats buffer.
+#include "techniques/bitmask/bindings.glsl"
 #include "techniques/bitmask/search.glsl"
 #include "techniques/bitmask/backproject.glsl"
 
-layout(binding = 7) uniform sampler2D u_area;
-layout(binding = 8) uniform sampler2D u_loq;
-layout(std430, binding = 3) buffer Stats {
+layout(binding = BITMASK_UNIT_VISIBILITY_AREA) uniform sampler2D u_area;
+layout(binding = BITMASK_UNIT_VISIBILITY_LOQ) uniform sampler2D u_loq;
+layout(std430, binding = BITMASK_BINDING_VISIBILITY_STATS) buffer Stats {
     uint s_backprojecting;
     uint s_umbra;
     uint s_occluders[2];  // 64-bit sum: low, high word

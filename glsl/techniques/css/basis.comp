@@ -6,11 +6,12 @@
 // minus its value for an empty texel (z = 1: cos = -1, sin = 0), so the uncovered part of the
 // map and everything outside it is exactly 0: mipmaps use a zero border and summed-area tables
 // grow only with the area that casters cover (FP32 precision).
+#include "techniques/css/bindings.glsl"
 #include "techniques/css/basis_layout.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_depth;
-layout(rgba32f, binding = 0) uniform writeonly image2DArray u_basis;
+layout(binding = CSS_UNIT_BASIS_DEPTH) uniform sampler2D u_depth;
+layout(rgba32f, binding = CSS_IMAGE_BASIS) uniform writeonly image2DArray u_basis;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -8,6 +8,7 @@
 //     v^p, p = 1 + A exp(-B (d - z_avg)).
 // Diagnostics: colour 1 = z_avg (normalised depth; 0 where no blocker), colour 2 = the final
 // kernel's width in shadow-map texels along its wider axis.
+#include "techniques/css/bindings.glsl"
 #ifndef FILTER_SAT
 #define FILTER_SAT 0
 #endif
@@ -29,10 +30,13 @@
 #include "techniques/css/basis_layout.glsl"
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform sampler2DArray u_basis;  // mipmapped basis, or its (N+1)^2 SAT
-layout(binding = 3) uniform sampler2DArray u_basis_search;  // u_basis, bilinear in one level
-layout(binding = 4) uniform isampler2D u_id;                // the G-buffer's object ids
+layout(binding = CSS_UNIT_VISIBILITY_POSITION) uniform sampler2D u_position;
+// Mipmapped basis, or its (N+1)^2 SAT
+layout(binding = CSS_UNIT_VISIBILITY_BASIS) uniform sampler2DArray u_basis;
+// u_basis, bilinear in one level
+layout(binding = CSS_UNIT_VISIBILITY_BASIS_SEARCH) uniform sampler2DArray u_basis_search;
+// The G-buffer's object ids
+layout(binding = CSS_UNIT_VISIBILITY_ID) uniform isampler2D u_id;
 
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;

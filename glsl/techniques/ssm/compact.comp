@@ -1,8 +1,10 @@
 #version 450 core
 // `ssm` GPU path (Atty et al. 4.3, 7): the occluder map's non-empty texels appended to the
 // micro-patch list, with their count as the instance count of the splat's indirect draw.
+#include "techniques/ssm/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_occluder;  // linear depth in [0, 1] of the window
+// Linear depth in [0, 1] of the window
+layout(binding = SSM_UNIT_COMPACT_OCCLUDER) uniform sampler2D u_occluder;
 uniform float u_empty;      // the cleared depth: 1 (nearest map) or 0 (farthest map)
 uniform float u_occ_near;
 uniform float u_occ_range;  // far - near
@@ -11,8 +13,8 @@ struct Patch {
     uint texel;  // y * map size + x
     float z;     // distance from the light
 };
-layout(std430, binding = 4) writeonly buffer Patches { Patch u_patches[]; };
-layout(std430, binding = 5) buffer Command {
+layout(std430, binding = SSM_BINDING_PATCHES) writeonly buffer Patches { Patch u_patches[]; };
+layout(std430, binding = SSM_BINDING_COMMAND) buffer Command {
     uint u_vertices;  // 4, set by the host
     uint u_instances;
     uint u_first;

@@ -2,10 +2,12 @@
 // `ssm` receiver layers (depth peeling from the light's centre): keeps the receiver surfaces
 // that face the light's centre, and in layer k > 0 only those at least u_peel_gap (normalised
 // depth) beyond layer k - 1 at the same texel.
+#include "techniques/ssm/bindings.glsl"
 in float v_depth;
 in vec3 v_world;
 in vec3 v_normal;
-layout(binding = 5) uniform sampler2DArray u_previous;  // the layers peeled so far
+// The layers peeled so far
+layout(binding = SSM_UNIT_PEEL_PREVIOUS) uniform sampler2DArray u_previous;
 uniform int u_layer;
 uniform float u_peel_gap;
 uniform vec3 u_light_centre;

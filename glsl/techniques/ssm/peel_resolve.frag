@@ -1,8 +1,9 @@
 #version 450 core
 // `ssm` receiver layers: stores the farthest receiver layer (drawn with the greater depth test,
 // cleared to 0) into its array layer with the layers' convention, 1 where there is none.
-layout(binding = 0) uniform sampler2D u_depth;  // the scratch map's depth
-layout(binding = 1) uniform isampler2D u_ids;   // its object ids, -1 where none
+#include "techniques/ssm/bindings.glsl"
+layout(binding = SSM_UNIT_RESOLVE_DEPTH) uniform sampler2D u_depth;  // the scratch map's depth
+layout(binding = SSM_UNIT_RESOLVE_IDS) uniform isampler2D u_ids;   // its object ids, -1 where none
 in vec2 v_uv;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

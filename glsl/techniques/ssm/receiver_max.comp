@@ -3,11 +3,15 @@
 // (empty as -1); each further level holds the farthest receiver of the texels below it, so a
 // splat quad finds the farthest receiver of its layer under it in four fetches, and a quad
 // over none is culled.
+#include "techniques/ssm/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2DArray u_source;  // the pyramids themselves
-layout(binding = 1) uniform sampler2DArray u_layers;  // the receiver layers
+// The pyramids themselves
+layout(binding = SSM_UNIT_RECEIVER_MAX_SOURCE) uniform sampler2DArray u_source;
+// The receiver layers
+layout(binding = SSM_UNIT_RECEIVER_MAX_LAYERS) uniform sampler2DArray u_layers;
 uniform int u_layer;
-layout(r32f, binding = 0) uniform writeonly image2D u_target;  // level, layer u_layer
+// Level, layer u_layer
+layout(r32f, binding = SSM_IMAGE_RECEIVER_MAX_TARGET) uniform writeonly image2D u_target;
 uniform int u_from_depth;    // 1: read the layer's depth, 0: reduce level u_source_level
 uniform int u_source_level;
 

@@ -3,7 +3,9 @@
 // soft-shadow-map texel. The patch is back-projected from the receiver onto the light and the
 // covered area is the product of two interval intersections (Atty et al. 3.4, 4.2); the host
 // sums the patches with additive blending, once per receiver layer.
-layout(binding = 1) uniform sampler2DArray u_receiver;  // linear receiver depth, 1 = none
+#include "techniques/ssm/bindings.glsl"
+// Linear receiver depth, 1 = none
+layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;
 uniform int u_layer;                                     // the receiver layer splatted into
 uniform vec2 u_light_half;
 uniform vec2 u_ssm_lo;
@@ -12,7 +14,7 @@ uniform float u_receiver_near;
 uniform float u_receiver_range;
 uniform float u_depth_bias;    // a patch must be this fraction of z_R nearer than the receiver
 
-layout(binding = 8) uniform isampler2DArray u_layer_ids;
+layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 uniform int u_layer_count;
 
 flat in vec4 v_patch;

@@ -3,6 +3,7 @@
 // light at the texel's depth). Four strip vertices span its penumbra rectangle on the soft
 // shadow map (Atty et al. 3.3). The list comes from compact.comp (GPU path) or from the host's
 // readback (CPU path, 4.1). With CLIP the extent uses the farthest receiver under the quad.
+#include "techniques/ssm/bindings.glsl"
 #ifndef CLIP
 #define CLIP 0
 #endif
@@ -18,14 +19,15 @@ struct Patch {
     uint texel;  // y * map size + x
     float z;     // distance from the light
 };
-layout(std430, binding = 4) readonly buffer Patches { Patch u_patches[]; };
+layout(std430, binding = SSM_BINDING_PATCHES) readonly buffer Patches { Patch u_patches[]; };
 uniform int u_map_size;
 uniform vec2 u_occ_lo;       // occluder-map window at distance 1
 uniform vec2 u_occ_texel;    // one texel of it
 
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
-layout(binding = 2) uniform sampler2DArray u_receiver_max;  // per receiver layer
+// Per receiver layer
+layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_max;
 #endif
 uniform float u_receiver_near;
 uniform float u_receiver_range;
@@ -35,15 +37,15 @@ uniform float u_receiver_range;
 // layers' depths and objects. A patch shadows receivers of its own object only where that
 // object has another light-facing surface beyond it at the patch's place (an ear over a
 // head), never the surface it lies on (a convex object hides only what its horizon does).
-layout(binding = 6) uniform isampler2D u_occ_ids;
-layout(binding = 7) uniform sampler2DArray u_layer_depths;
-layout(binding = 8) uniform isampler2DArray u_layer_ids;
+layout(binding = SSM_UNIT_SPLAT_OCC_IDS) uniform isampler2D u_occ_ids;
+layout(binding = SSM_UNIT_SPLAT_LAYER_DEPTHS) uniform sampler2DArray u_layer_depths;
+layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 uniform int u_layer_count;
 uniform float u_depth_bias;
 flat out int v_object;     // the patch's object
 flat out int v_separated;  // 1: it lies apart from its object's next surface beyond it
 
-layout(std430, binding = 3) buffer Counters {
+layout(std430, binding = SSM_BINDING_COUNTERS) buffer Counters {
     uint u_micro_patches;
     uint u_texels_touched;
 };

@@ -7,6 +7,7 @@
 // nearest layer, which for a pixel beyond a full stack of layers is the deepest: what shadows
 // that surface shadows the pixel behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
 // used (of the texel weighing most; -1 where none).
+#include "techniques/ssm/bindings.glsl"
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
 #endif
@@ -15,14 +16,17 @@
 #include "common/light_horizon.glsl"
 
 in vec2 v_uv;
-layout(binding = 0) uniform sampler2D u_position;
-layout(binding = 1) uniform isampler2D u_id;
-layout(binding = 2) uniform sampler2D u_receives;  // 1 per object id that receives shadows
-layout(binding = 3) uniform sampler2DArray u_ssm;  // one layer per receiver layer
+layout(binding = SSM_UNIT_VISIBILITY_POSITION) uniform sampler2D u_position;
+layout(binding = SSM_UNIT_VISIBILITY_ID) uniform isampler2D u_id;
+// 1 per object id that receives shadows
+layout(binding = SSM_UNIT_VISIBILITY_RECEIVES) uniform sampler2D u_receives;
+// One layer per receiver layer
+layout(binding = SSM_UNIT_VISIBILITY_SSM) uniform sampler2DArray u_ssm;
 #if TWO_SIDED
-layout(binding = 4) uniform sampler2DArray u_ssm_back;
+layout(binding = SSM_UNIT_VISIBILITY_SSM_BACK) uniform sampler2DArray u_ssm_back;
 #endif
-layout(binding = 5) uniform sampler2DArray u_layers;  // receiver depth per layer, 1 = none
+// Receiver depth per layer, 1 = none
+layout(binding = SSM_UNIT_VISIBILITY_LAYERS) uniform sampler2DArray u_layers;
 uniform vec3 u_light_centre;
 uniform vec3 u_light_right;
 uniform vec3 u_light_up;

@@ -19,8 +19,26 @@
 namespace penumbra::techniques {
 namespace {
 
+enum class Metric { Error, Global, Tile };
+enum class Compare { Auto, Depth, ShadowTest };
+enum class GammaMode { Absolute, Relative };
+enum class Reprojection { Camera, LightCentre };
+enum class MetricArea { Map, Screen };
+enum class Subdivision { Auto, Quad, Linear };
+enum class Evaluation { Array, Accumulate };
+using Weighting = adaptive::LightQuadtree::Weighting;
+
+constexpr EnumKey<Metric, 3> kMetric{"metric", {"error", "global", "tile"}};
+constexpr EnumKey<Compare, 3> kCompare{"compare", {"auto", "depth", "shadow_test"}};
+constexpr EnumKey<GammaMode, 2> kGammaMode{"gamma_mode", {"absolute", "relative"}};
+constexpr EnumKey<Reprojection, 2> kReprojection{"reprojection", {"camera", "light_centre"}};
+constexpr EnumKey<MetricArea, 2> kMetricArea{"metric_area", {"map", "screen"}};
+constexpr EnumKey<Subdivision, 3> kSubdivision{"subdivision", {"auto", "quad", "linear"}};
+constexpr EnumKey<Weighting, 3> kWeights{"weights", {"area", "paper", "equal"}};
+constexpr EnumKey<Evaluation, 2> kEvaluation{"evaluation", {"array", "accumulate"}};
+
 constexpr std::array kAdaptiveParams = {
-    enumParam("metric", "error", "error|global|tile",
+    enumParam(kMetric, Metric::Error,
               "error: split the cells whose corner maps leave the largest estimated visibility "
               "error until the frame's estimate is at most target_error (independent of the "
               "image size); global: eq. 4 with epsilon over the whole frame (paper); tile: "
@@ -35,32 +53,32 @@ constexpr std::array kAdaptiveParams = {
                "(eq. 4)"),
     floatParam("gamma", 0.01, 0.0, 1.0,
                "two stored depths are equal when they differ by less than gamma (eq. 3 / 7)"),
-    enumParam("compare", "auto", "auto|depth|shadow_test",
+    enumParam(kCompare, Compare::Auto,
               "what two maps are compared on: their stored depths (paper, with gamma) or their "
               "hard-shadow test results for the receiver; auto: shadow_test for metric "
               "\"error\" (disagreeing tests are where visibility varies), depth otherwise"),
-    enumParam("gamma_mode", "absolute", "absolute|relative",
+    enumParam(kGammaMode, GammaMode::Absolute,
               "depth test: absolute |d_a - d_b| (eq. 3) or relative |1 - d_a/d_b| (eq. 7)"),
-    enumParam("reprojection", "camera", "camera|light_centre",
+    enumParam(kReprojection, Reprojection::Camera,
               "where maps are compared: the camera view (view-dependent) or a map_size^2 view "
               "from the light's centre (view-independent, section 4.1)"),
     intParam("tile_size", 32, 4, 1024, "tile side in pixels for metric \"tile\""),
     floatParam("tile_epsilon", 0.05, 0.0, 1.0,
                "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
-    enumParam("metric_area", "map", "map|screen",
+    enumParam(kMetricArea, MetricArea::Map,
               "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
     intParam("compare_stride", 2, 1, 8,
              "compare at every k-th pixel along x and y of the comparison view, counting each "
              "disagreement as k^2 pixels (1: every pixel, as the paper)"),
     intParam("max_depth", 3, 0, 8, "deepest quadtree level"),
     intParam("max_maps", 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
-    enumParam("subdivision", "auto", "auto|quad|linear",
+    enumParam(kSubdivision, Subdivision::Auto,
               "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
               "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
-    enumParam("weights", "area", "area|paper|equal",
+    enumParam(kWeights, Weighting::Area,
               "sample weights, normalised: area (each leaf cell's area shared by its corners), "
               "paper (1/(2^d+1)^2, eq. 5/6) or equal"),
-    enumParam("evaluation", "array", "array|accumulate",
+    enumParam(kEvaluation, Evaluation::Array,
               "array: all maps in one pass over a texture array (3.4.2); accumulate: each map "
               "added to the accumulation buffer right after it is rendered (3.4.1)"),
     boolParam("jitter", true,
@@ -73,41 +91,37 @@ constexpr std::array kAdaptiveParams = {
     kDepthBiasParam,
 };
 
-adaptive::LightQuadtree::Weighting weighting(const std::string& name) {
-    using W = adaptive::LightQuadtree::Weighting;
-    return name == "paper" ? W::Paper : name == "equal" ? W::Equal : W::Area;
-}
-
 // Maps rendered per draw into the scratch array before they are copied to their layers.
 constexpr int kScratchLayers = 16;
 
 class Adaptive final : public Technique {
 public:
     explicit Adaptive(const Params& p)
-        : error_metric_(p.getString("metric") == "error"),
+        : error_metric_(p.getEnum(kMetric) == Metric::Error),
           target_error_(p.getFloat("target_error")),
           epsilon_(p.getFloat("epsilon")),
-          screen_metric_(p.getString("metric_area") == "screen"),
+          screen_metric_(p.getEnum(kMetricArea) == MetricArea::Screen),
           tile_epsilon_(p.getFloat("tile_epsilon")),
-          light_centre_(p.getString("reprojection") == "light_centre"),
+          light_centre_(p.getEnum(kReprojection) == Reprojection::LightCentre),
           max_depth_(p.getInt("max_depth")),
           max_maps_(p.getInt("max_maps")),
-          weighting_(weighting(p.getString("weights"))),
-          accumulate_path_(p.getString("evaluation") == "accumulate"),
-          subdivision_(p.getString("subdivision")),
+          weighting_(p.getEnum(kWeights)),
+          accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
+          subdivision_(p.getEnum(kSubdivision)),
           jitter_(p.getBool("jitter")),
           seed_(static_cast<unsigned>(p.getInt("seed"))),
           settings_(samplingSettings(p)) {
         compare_.gamma = static_cast<float>(p.getFloat("gamma"));
-        compare_.relative = p.getString("gamma_mode") == "relative";
-        const std::string compare = p.getString("compare");
-        compare_.tests = compare == "shadow_test" || (compare == "auto" && error_metric_);
+        compare_.relative = p.getEnum(kGammaMode) == GammaMode::Relative;
+        const Compare compare = p.getEnum(kCompare);
+        compare_.tests =
+            compare == Compare::ShadowTest || (compare == Compare::Auto && error_metric_);
         compare_.normal_offset = settings_.test.normal_offset;
         compare_.depth_bias = settings_.test.depth_bias;
-        if (p.getString("metric") == "tile") compare_.tile_size = p.getInt("tile_size");
+        if (p.getEnum(kMetric) == Metric::Tile) compare_.tile_size = p.getInt("tile_size");
         compare_.stride = p.getInt("compare_stride");
         settings_.test.pcf = p.getInt("pcf");
-        if (accumulate_path_ && weighting_ == adaptive::LightQuadtree::Weighting::Area)
+        if (accumulate_path_ && weighting_ == Weighting::Area)
             throw RuntimeError(
                 "adaptive: evaluation \"accumulate\" adds each map when it is rendered, before "
                 "its area weight is known: use weights \"paper\" or \"equal\"");
@@ -132,8 +146,9 @@ public:
 
     void render(frame::FrameContext& ctx) override {
         const scene::RectLight& light = ctx.currentLight();
-        const bool linear = subdivision_ == "linear" ||
-                            (subdivision_ == "auto" && light.size.y <= 1e-3f * light.size.x);
+        const bool linear =
+            subdivision_ == Subdivision::Linear ||
+            (subdivision_ == Subdivision::Auto && light.size.y <= 1e-3f * light.size.x);
         adaptive::LightQuadtree tree(max_depth_, linear, jitter_, seed_);
         views_.clear();
         ctx.bindOutput();
@@ -394,7 +409,7 @@ private:
     int max_maps_;
     adaptive::LightQuadtree::Weighting weighting_;
     bool accumulate_path_;
-    std::string subdivision_;
+    Subdivision subdivision_;
     bool jitter_;
     unsigned seed_;
     SamplingSettings settings_;

@@ -47,11 +47,12 @@ public:
     // The cells never split: they tile the light.
     const std::vector<QuadtreeCell>& leaves() const { return leaves_; }
 
+    // In the order of the `weights` parameter's choices (adaptive.cpp's kWeights).
     enum class Weighting {
-        Paper,  // 1/(2^d+1)^2 (2D) or 1/(2^d+1) (1D) by creation depth d (eq. 5, 6)
-        Equal,  // every sample alike
         Area,   // each leaf's area shared by its corners: the integral of the bilinear
                 // interpolant of the samples (a trapezoid rule on the adaptive grid)
+        Paper,  // 1/(2^d+1)^2 (2D) or 1/(2^d+1) (1D) by creation depth d (eq. 5, 6)
+        Equal,  // every sample alike
     };
     // Normalised weights of every sample, in sample order.
     std::vector<float> weights(Weighting weighting) const;

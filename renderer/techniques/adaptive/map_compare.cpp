@@ -1,13 +1,13 @@
 // `adaptive`: two shadow maps compared over a G-buffer, counted by an occlusion query and by
 // per-tile atomic counters; see map_compare.h.
 #include "renderer/techniques/adaptive/map_compare.h"
+#include "glsl/techniques/adaptive/bindings.glsl"
 
 #include <algorithm>
 
 namespace penumbra::techniques::adaptive {
 namespace {
 // Storage-buffer binding of the tile counters (glsl/techniques/adaptive/compare.frag).
-constexpr GLuint kTileCountsBinding = 7;
 }  // namespace
 
 MapCompare::MapCompare()
@@ -56,14 +56,15 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
         const GLuint zero = 0;
         glClearNamedBufferSubData(tile_counts_.id(), GL_R32UI, 0, GLsizeiptr(need * sizeof(GLuint)),
                                   GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCountsBinding, tile_counts_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_COMPARE_TILE_COUNTS,
+                         tile_counts_.id());
         gl::setUniform(program_, "u_tiles_x", tx);
     }
     glUseProgram(program_.id());
-    glBindTextureUnit(0, gbuffer.position().id());
-    glBindTextureUnit(1, gbuffer.normal().id());
-    glBindTextureUnit(2, maps.depth().id());
-    glBindSampler(2, sampler_);
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps.depth().id());
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
     gl::setUniform(program_, "u_tile_size", tiles_ > 0 ? s.tile_size : 0);
     gl::setUniform(program_, "u_stride", stride_);
     gl::setUniform(program_, "u_gamma", s.gamma);
@@ -106,7 +107,7 @@ void MapCompare::queue(int mode, std::array<int, 4> views, int level) {
 std::vector<CompareResult> MapCompare::end() {
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
-    glBindSampler(2, 0);
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);
     glUseProgram(0);
     const double scale = double(stride_) * double(stride_);
     std::vector<CompareResult> out(static_cast<size_t>(used_));

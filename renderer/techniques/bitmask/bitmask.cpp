@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "glsl/techniques/bitmask/bindings.glsl"
 #include "renderer/core/error.h"
+#include "renderer/gl/param_uniforms.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
@@ -29,79 +31,88 @@ namespace {
 using bitmask::Accel;
 using bitmask::DepthRanges;
 
+enum class Occluders { Micropatch, Microquad, Microrect };
+enum class Visibility { Bitmask, Area };
+
+// ACCEL in the shaders is the enum's index: 0 hsm, 1 mssm, 2 ysm (bitmask/search.glsl).
+constexpr EnumKey<Accel, 3> kAccel{"accel", {"hsm", "mssm", "ysm"}};
+constexpr EnumKey<Occluders, 3> kOccluders{"occluders", {"micropatch", "microquad", "microrect"}};
+constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "area"}};
+
 constexpr std::array kBitmaskParams = {
-    intParam("map_size", 1024, 16, 4096, "light depth map width and height (a power of two)"),
-    enumParam("accel", "ysm", "hsm|mssm|ysm",
-              "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid"),
+    intParam("map_size", 1024, 16, 4096, "light depth map width and height (a power of two)")
+        .uniform()
+        .limitedBy(GlLimit::MaxTextureSize),
+    enumParam(kAccel, Accel::Ysm,
+              "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid")
+        .define(),
     intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
-    enumParam("occluders", "microrect", "micropatch|microquad|microrect",
+    enumParam(kOccluders, Occluders::Microrect,
               "micro-occluders: microrects merged per level (5.2), texels, or quads between "
               "texel centres (bitmask only)"),
-    enumParam("visibility", "bitmask", "bitmask|area",
+    enumParam(kVisibility, Visibility::Bitmask,
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
-    enumParam("pattern", "jittered", "regular|jittered|random", "light sample pattern"),
+    enumParam(bitmask::kPattern, bitmask::Pattern::Jittered, "light sample pattern"),
     intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
-    boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)"),
+    boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)")
+        .define(),
     intParam("budget", 12, 0, 64,
              "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
              "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
-             "also back-projects the finer floor level"),
+             "also back-projects the finer floor level")
+        .uniform(),
     boolParam("budget_falloff", false,
-              "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners"),
+              "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners")
+        .uniform(),
     intParam("budget_edge", 5, 2, 64,
-             "b_mo at the image corners with budget_falloff, where budget_map is 0"),
+             "b_mo at the image corners with budget_falloff, where budget_map is 0")
+        .uniform(),
     stringParam("budget_map", "",
                 "budget map image (.png or .exr, relative to the scene file): its first channel "
                 "v in [0, 1], stretched over the image, sets b_mo = budget_edge + v (budget - "
                 "budget_edge)"),
     boolParam("smooth", true,
               "bilateral-filter the fractional level and blend floor/ceiling levels (4.2)"),
-    intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels"),
+    intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels")
+        .uniform("u_radius"),
     floatParam("depth_tolerance", 0.03, 0.0, 1.0,
-               "relative view-depth step where the filter stops (a depth discontinuity)"),
-    intParam("refine_steps", 4, 0, 16, "search-area refinements with the area's depth range"),
+               "relative view-depth step where the filter stops (a depth discontinuity)")
+        .uniform(),
+    intParam("refine_steps", 4, 0, 16, "search-area refinements with the area's depth range")
+        .uniform(),
     boolParam("grow_query", true,
-              "grow depth-range queries to the budget level's texels (section 6, Fig. 7)"),
+              "grow depth-range queries to the budget level's texels (section 6, Fig. 7)")
+        .uniform(),
     floatParam("normal_offset", 1.5, 0.0, 16.0,
-               "receiver offset along its normal, in light-map texels (against acne)"),
-    floatParam(
-        "depth_bias", 0.003, 0.0, 0.5,
-        "a micro-occluder shadows a receiver only when nearer by this fraction of its depth"),
+               "receiver offset along its normal, in light-map texels (against acne)")
+        .uniform(),
+    floatParam("depth_bias", 0.003, 0.0, 0.5,
+               "a micro-occluder shadows a receiver only when nearer by this fraction of its "
+               "depth")
+        .uniform(),
 };
 
 bool isPowerOfTwo(int n) {
     return n > 0 && (n & (n - 1)) == 0;
 }
 
-Accel accelFromName(const std::string& name) {
-    return name == "hsm" ? Accel::Hsm : name == "mssm" ? Accel::Mssm : Accel::Ysm;
-}
-
 class Bitmask final : public Technique {
 public:
     explicit Bitmask(const Params& p)
-        : map_size_(p.getInt("map_size")),
-          accel_(accelFromName(p.getString("accel"))),
+        : params_(p),
+          map_size_(p.getInt("map_size")),
+          accel_(p.getEnum(kAccel)),
           ysm_size_(p.getInt("ysm_size")),
-          microrects_(p.getString("occluders") == "microrect"),
-          microquads_(p.getString("occluders") == "microquad"),
-          use_bitmask_(p.getString("visibility") == "bitmask"),
+          microrects_(p.getEnum(kOccluders) == Occluders::Microrect),
+          microquads_(p.getEnum(kOccluders) == Occluders::Microquad),
+          use_bitmask_(p.getEnum(kVisibility) == Visibility::Bitmask),
           bits_(p.getInt("bits")),
-          pattern_(bitmask::patternFromName(p.getString("pattern"))),
+          pattern_(p.getEnum(bitmask::kPattern)),
           seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
-          gap_fill_(p.getBool("gap_fill")),
           budget_(p.getInt("budget")),
-          falloff_(p.getBool("budget_falloff")),
-          budget_edge_(p.getInt("budget_edge")),
           budget_map_file_(p.getString("budget_map")),
-          smooth_(p.getBool("smooth")),
-          radius_(p.getInt("smooth_radius")),
-          depth_tolerance_(static_cast<float>(p.getFloat("depth_tolerance"))),
-          refine_steps_(p.getInt("refine_steps")),
-          grow_query_(p.getBool("grow_query")),
-          normal_offset_(static_cast<float>(p.getFloat("normal_offset"))),
-          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))) {
+          smooth_(p.getBool("smooth")) {
         if (!isPowerOfTwo(map_size_))
             throw InputError("technique.map_size: must be a power of two, got " +
                              std::to_string(map_size_));
@@ -147,12 +158,12 @@ public:
         }
         if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
         if (budget_map_) budget_texture_ = bitmask::uploadBudgetMap(*budget_map_);
-        const gl::Defines defines = {{"ACCEL", std::to_string(static_cast<int>(accel_))},
-                                     {"BITMASK", use_bitmask_ ? "1" : "0"},
-                                     {"GAP_FILL", gap_fill_ ? "1" : "0"},
-                                     {"MICRORECTS", microrects_ ? "1" : "0"},
-                                     {"MICROQUADS", microquads_ ? "1" : "0"},
-                                     {"BLEND", smooth_ ? "1" : "0"}};
+        // ACCEL and GAP_FILL from the table; the rest follow from several parameters.
+        gl::Defines defines = gl::paramDefines(kBitmaskParams, params_);
+        defines.insert(defines.end(), {{"BITMASK", use_bitmask_ ? "1" : "0"},
+                                       {"MICRORECTS", microrects_ ? "1" : "0"},
+                                       {"MICROQUADS", microquads_ ? "1" : "0"},
+                                       {"BLEND", smooth_ ? "1" : "0"}});
         classify_ = gl::buildProgram("bitmask classify",
                                      {"passes/fullscreen.vert", "techniques/bitmask/classify.frag"},
                                      defines);
@@ -199,23 +210,23 @@ private:
     // The uniforms and textures of search.glsl.
     void bindSearch(const frame::FrameContext& ctx, const gl::Program& p,
                     const scene::RectLight& light, const ssm::LightWindow& window) {
-        glBindTextureUnit(0, ctx.gbuffer.position().id());
-        glBindTextureUnit(1, ctx.gbuffer.normal().id());
-        glBindTextureUnit(2, ctx.gbuffer.id().id());
+        glBindTextureUnit(BITMASK_UNIT_SEARCH_POSITION, ctx.gbuffer.position().id());
+        glBindTextureUnit(BITMASK_UNIT_SEARCH_NORMAL, ctx.gbuffer.normal().id());
+        glBindTextureUnit(BITMASK_UNIT_SEARCH_ID, ctx.gbuffer.id().id());
         ctx.gbuffer.bindGeometricNormal();
-        glBindTextureUnit(3, receives_.id());
-        glBindTextureUnit(4, ranges_->hsm().id());
-        if (accel_ != Accel::Hsm) glBindTextureUnit(5, ranges_->mssm().id());
+        glBindTextureUnit(BITMASK_UNIT_SEARCH_RECEIVES, receives_.id());
+        glBindTextureUnit(BITMASK_UNIT_SEARCH_HSM, ranges_->hsm().id());
+        if (accel_ != Accel::Hsm) glBindTextureUnit(BITMASK_UNIT_SEARCH_MSSM, ranges_->mssm().id());
         gl::setUniform(p, "u_mssm_base", ranges_->mssmBase());
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_win_lo", window.lo);
         gl::setUniform(p, "u_texel", window.size / static_cast<float>(map_size_));
-        gl::setUniform(p, "u_map_size", map_size_);
         gl::setUniform(p, "u_levels", ranges_->levels());
         gl::setUniform(p, "u_near", window.near);
-        gl::setUniform(p, "u_normal_offset", normal_offset_);
-        gl::setUniform(p, "u_depth_bias", depth_bias_);
+        // map_size, normal_offset, depth_bias; in classify also refine_steps, the budget's and
+        // grow_query.
+        gl::setParamUniforms(p, kBitmaskParams, params_);
     }
 
     void classify(frame::FrameContext& ctx, const scene::RectLight& light,
@@ -228,13 +239,9 @@ private:
             const auto& p = classify_;
             glUseProgram(p.id());
             bindSearch(ctx, p, light, window);
-            gl::setUniform(p, "u_refine_steps", refine_steps_);
-            gl::setUniform(p, "u_budget", budget_);
-            gl::setUniform(p, "u_budget_edge", budget_edge_);
-            gl::setUniform(p, "u_budget_falloff", falloff_ ? 1 : 0);
             gl::setUniform(p, "u_budget_map_on", budget_texture_ ? 1 : 0);
-            if (budget_texture_) glBindTextureUnit(12, budget_texture_.id());
-            gl::setUniform(p, "u_grow_query", grow_query_ ? 1 : 0);
+            if (budget_texture_)
+                glBindTextureUnit(BITMASK_UNIT_CLASSIFY_BUDGET_MAP, budget_texture_.id());
             fullscreen_.draw();
             glUseProgram(0);
         }
@@ -245,12 +252,11 @@ private:
     void smoothLoq(frame::FrameContext& ctx) {
         const auto& p = smooth_program_;
         glUseProgram(p.id());
-        gl::setUniform(p, "u_radius", radius_);
-        gl::setUniform(p, "u_depth_tolerance", depth_tolerance_);
-        glBindTextureUnit(1, ctx.gbuffer.normal().id());
+        gl::setParamUniforms(p, kBitmaskParams, params_);  // smooth_radius, depth_tolerance
+        glBindTextureUnit(BITMASK_UNIT_SMOOTH_NORMAL, ctx.gbuffer.normal().id());
         for (int pass = 0; pass < 2; ++pass) {
             targets_->bindLoq(pass == 0 ? 1 : 0);
-            glBindTextureUnit(0, targets_->loq(pass == 0 ? 0 : 1).id());
+            glBindTextureUnit(BITMASK_UNIT_SMOOTH_LOQ, targets_->loq(pass == 0 ? 0 : 1).id());
             gl::setUniform(p, "u_direction", pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
             fullscreen_.draw();
         }
@@ -267,23 +273,23 @@ private:
         glUseProgram(p.id());
         bindSearch(ctx, p, light, window);
         if (use_bitmask_) {
-            glBindTextureUnit(6, masks_.id());
-            glBindTextureUnit(13, samples_.id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_MASKS, masks_.id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_SAMPLES, samples_.id());
             gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
             gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
         }
-        glBindTextureUnit(7, targets_->area().id());
-        glBindTextureUnit(8, targets_->loq(0).id());
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_AREA, targets_->area().id());
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_LOQ, targets_->loq(0).id());
         if (microquads_) {
-            glBindTextureUnit(11, edges_.id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_EDGES, edges_.id());
             gl::setUniform(p, "u_edge_angles", bitmask::kEdgeAngles);
             gl::setUniform(p, "u_edge_offsets", bitmask::kEdgeOffsets);
         }
         if (microrects_) {
-            glBindTextureUnit(9, rects_->extent().id());
-            glBindTextureUnit(10, rects_->depth().id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_EXTENT, rects_->extent().id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
         }
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, stats_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_STATS, stats_.id());
         fullscreen_.draw();
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         glUseProgram(0);
@@ -312,6 +318,7 @@ private:
             n > 0 ? std::sqrt(std::max(squares / n - mean * mean, 0.0)) : 0.0;
     }
 
+    Params params_;
     int map_size_;
     Accel accel_;
     int ysm_size_;
@@ -320,18 +327,10 @@ private:
     int bits_;
     bitmask::Pattern pattern_;
     std::uint32_t seed_;
-    bool gap_fill_;
     int budget_;
-    bool falloff_;
-    int budget_edge_;
     std::string budget_map_file_;
     std::optional<bitmask::BudgetMap> budget_map_;  // read by readInputs()
     bool smooth_;
-    int radius_;
-    float depth_tolerance_;
-    int refine_steps_;
-    bool grow_query_;
-    float normal_offset_, depth_bias_;
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<bitmask::LoqTargets> targets_;
     std::unique_ptr<bitmask::MicroRects> rects_;

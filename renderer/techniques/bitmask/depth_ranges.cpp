@@ -1,5 +1,6 @@
 // `bitmask`'s light depth map and acceleration structures: see depth_ranges.h.
 #include "renderer/techniques/bitmask/depth_ranges.h"
+#include "glsl/techniques/bitmask/bindings.glsl"
 
 #include <algorithm>
 
@@ -67,8 +68,10 @@ void DepthRanges::buildHsm() {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     glUseProgram(hsm_program_.id());
     for (int level = 1; level < levels_; ++level) {
-        glBindImageTexture(0, hsm_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
-        glBindImageTexture(1, hsm_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+        glBindImageTexture(BITMASK_IMAGE_HSM_FINER, hsm_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY,
+                           GL_RG32F);
+        glBindImageTexture(BITMASK_IMAGE_HSM_COARSER, hsm_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY,
+                           GL_RG32F);
         const GLuint groups = groupsFor(map_size_ >> level);
         glDispatchCompute(groups, groups, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -80,8 +83,9 @@ void DepthRanges::buildMssm() {
     if (mssm_layers_ == 0) return;
     const int size = map_size_ >> mssm_base_;
     glUseProgram(mssm_program_.id());
-    glBindImageTexture(0, hsm_.id(), mssm_base_, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
-    glBindImageTexture(1, mssm_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
+    glBindImageTexture(BITMASK_IMAGE_MSSM_HSM_LEVEL, hsm_.id(), mssm_base_, GL_FALSE, 0,
+                       GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(BITMASK_IMAGE_MSSM, mssm_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
     // The YSM never queries layer 0 (depth_ranges.h): layer 1 is built from the HSM level.
     gl::setUniform(mssm_program_, "u_from_hsm", ysm_ ? 1 : 0);
     const GLuint groups = groupsFor(size);

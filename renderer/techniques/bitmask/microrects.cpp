@@ -1,5 +1,6 @@
 // `bitmask`'s microrects: see microrects.h.
 #include "renderer/techniques/bitmask/microrects.h"
+#include "glsl/techniques/bitmask/bindings.glsl"
 
 #include "renderer/gl/program.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
@@ -23,14 +24,19 @@ MicroRects::MicroRects(int map_size) : map_size_(map_size), levels_(1) {
 void MicroRects::build(const gl::Texture& hsm) {
     glUseProgram(program_.id());
     gl::setUniform(program_, "u_empty", DepthRanges::kEmpty);
-    glBindImageTexture(0, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(BITMASK_IMAGE_MICRORECTS_HSM0, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                       GL_RG32F);
     for (int level = 0; level < levels_; ++level) {
         gl::setUniform(program_, "u_from_hsm", level == 0 ? 1 : 0);
         const int finer = level == 0 ? 0 : level - 1;
-        glBindImageTexture(1, extent_.id(), finer, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(2, depth_.id(), finer, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-        glBindImageTexture(3, extent_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glBindImageTexture(4, depth_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_IN, extent_.id(), finer, GL_FALSE, 0,
+                           GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_IN, depth_.id(), finer, GL_FALSE, 0,
+                           GL_READ_ONLY, GL_R32F);
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_OUT, extent_.id(), level, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_OUT, depth_.id(), level, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_R32F);
         const GLuint groups = static_cast<GLuint>(((map_size_ >> level) + 7) / 8);
         glDispatchCompute(groups, groups, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

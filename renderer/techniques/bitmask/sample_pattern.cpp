@@ -11,13 +11,13 @@
 namespace penumbra::techniques::bitmask {
 
 Pattern patternFromName(std::string_view name) {
-    if (name == "regular") return Pattern::Regular;
-    if (name == "jittered") return Pattern::Jittered;
-    if (name == "random") return Pattern::Random;
-    std::string message = "technique.pattern: unknown pattern '";
-    message += name;
-    message += "' (regular, jittered, random)";
-    throw InputError(message);
+    std::string known;
+    for (std::size_t i = 0; i < kPattern.names.size(); ++i) {
+        if (kPattern.names[i] == name) return static_cast<Pattern>(i);
+        known += (i ? ", " : "") + std::string(kPattern.names[i]);
+    }
+    throw InputError("technique.pattern: unknown pattern '" + std::string(name) + "' (" + known +
+                     ")");
 }
 
 glm::ivec2 sampleGrid(int bits) {

@@ -10,13 +10,16 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/core/params.h"
+
 namespace penumbra::techniques::bitmask {
 
 constexpr int kMaskWords = 8;           // 256 bits, the widest bitmask
 constexpr int kTableResolution = 1024;  // positions per light axis of the half-plane tables
 
 enum class Pattern { Regular, Jittered, Random };
-Pattern patternFromName(std::string_view name);  // "regular" | "jittered" | "random"
+inline constexpr EnumKey<Pattern, 3> kPattern{"pattern", {"regular", "jittered", "random"}};
+Pattern patternFromName(std::string_view name);  // one of kPattern's names
 
 // The sample grid of BITS samples: 64 = 8 x 8, 128 = 16 x 8, 256 = 16 x 16.
 glm::ivec2 sampleGrid(int bits);

@@ -1,5 +1,6 @@
 // The prefiltered maps of `css`: see csm_maps.h.
 #include "renderer/techniques/css/csm_maps.h"
+#include "glsl/techniques/css/bindings.glsl"
 
 #include <algorithm>
 #include <bit>
@@ -59,8 +60,8 @@ void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight&
 
 void CsmMaps::buildBasis() {
     glUseProgram(basis_program_.id());
-    glBindTextureUnit(0, depth_.depth.id());
-    glBindImageTexture(0, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_.depth.id());
+    glBindImageTexture(CSS_IMAGE_BASIS, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |

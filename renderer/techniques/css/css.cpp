@@ -7,6 +7,8 @@
 #include <memory>
 #include <string>
 
+#include "glsl/techniques/css/bindings.glsl"
+#include "renderer/gl/param_uniforms.h"
 #include "renderer/passes/bindings.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
@@ -22,7 +24,7 @@ using css::CsmMaps;
 
 class Css final : public Technique {
 public:
-    explicit Css(const Params& p) : settings_(css::cssSettings(p)) {}
+    explicit Css(const Params& p) : params_(p), settings_(css::cssSettings(p)) {}
 
     void prepare(const gl::ContextInfo&, const passes::GpuScene&) override {
         maps_.reset();
@@ -64,14 +66,14 @@ private:
             maps_ = std::make_unique<CsmMaps>(settings_.map_size, settings_.order, has_mipmap_,
                                               has_sat_);
         }
-        if (!program)
+        if (!program) {
+            // ORDER, MAX_ANISO, MIP_TAPS, SEARCH_STEPS from the table; FILTER_SAT per light.
+            gl::Defines defines = gl::paramDefines(css::kCssParams, params_);
+            defines.emplace_back("FILTER_SAT", sat ? "1" : "0");
             program = gl::buildProgram("css visibility",
                                        {"passes/fullscreen.vert", "techniques/css/visibility.frag"},
-                                       {{"ORDER", std::to_string(settings_.order)},
-                                        {"FILTER_SAT", sat ? "1" : "0"},
-                                        {"MAX_ANISO", std::to_string(settings_.max_aniso)},
-                                        {"MIP_TAPS", std::to_string(settings_.mip_taps)},
-                                        {"SEARCH_STEPS", std::to_string(settings_.search_steps)}});
+                                       defines);
+        }
     }
 
     void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
@@ -87,12 +89,12 @@ private:
         glDisable(GL_DEPTH_TEST);
         const gl::Program& p = programs_[filter == CsmMaps::Filter::Sat ? 1 : 0];
         glUseProgram(p.id());
-        glBindTextureUnit(0, ctx.gbuffer.position().id());
-        glBindTextureUnit(1, maps_->filtered(filter).id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_POSITION, ctx.gbuffer.position().id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_BASIS, maps_->filtered(filter).id());
         ctx.gbuffer.bindGeometricNormal();
-        glBindTextureUnit(3, maps_->filtered(filter).id());  // through the search sampler
-        glBindSampler(3, maps_->searchSampler().id());
-        glBindTextureUnit(4, ctx.gbuffer.id().id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_BASIS_SEARCH, maps_->filtered(filter).id());
+        glBindSampler(CSS_UNIT_VISIBILITY_BASIS_SEARCH, maps_->searchSampler().id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_ID, ctx.gbuffer.id().id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
                          ctx.gpu.casterFlags().id());
         passes::setLightFrameUniforms(p, light);
@@ -103,15 +105,13 @@ private:
         gl::setUniform(p, "u_depth_near", range.near);
         gl::setUniform(p, "u_depth_far", range.far);
         gl::setUniform(p, "u_map_size", static_cast<float>(settings_.map_size));
-        gl::setUniform(p, "u_ring_scale", settings_.ring_scale);
-        gl::setUniform(p, "u_ring_shift", settings_.ring_shift);
-        gl::setUniform(p, "u_sharpen_a", settings_.sharpen_a);
-        gl::setUniform(p, "u_sharpen_b", settings_.sharpen_b);
+        gl::setParamUniforms(p, css::kCssParams, params_);  // ring_*, sharpen_*
         fullscreen_.draw();
-        glBindSampler(3, 0);
+        glBindSampler(CSS_UNIT_VISIBILITY_BASIS_SEARCH, 0);
         glUseProgram(0);
     }
 
+    Params params_;
     css::CssSettings settings_;
     std::unique_ptr<CsmMaps> maps_;
     bool has_mipmap_ = false, has_sat_ = false;

@@ -11,10 +11,7 @@ CssSettings cssSettings(const Params& p) {
     CssSettings s;
     s.order = p.getInt("order");
     s.map_size = p.getInt("map_size");
-    const std::string filter = p.getString("filter");
-    s.filter = filter == "mipmap" ? CssSettings::FilterChoice::Mipmap
-               : filter == "sat"  ? CssSettings::FilterChoice::Sat
-                                  : CssSettings::FilterChoice::Auto;
+    s.filter = p.getEnum(kFilter);
     s.max_aniso = p.getInt("max_aniso");
     s.mip_taps = p.getInt("mip_taps");
     s.search_steps = p.getInt("search_steps");
@@ -27,11 +24,11 @@ CssSettings cssSettings(const Params& p) {
 
 CsmMaps::Filter filterFor(const CssSettings& s, const scene::RectLight& light) {
     switch (s.filter) {
-        case CssSettings::FilterChoice::Mipmap:
+        case FilterChoice::Mipmap:
             return CsmMaps::Filter::Mipmap;
-        case CssSettings::FilterChoice::Sat:
+        case FilterChoice::Sat:
             return CsmMaps::Filter::Sat;
-        case CssSettings::FilterChoice::Auto:
+        case FilterChoice::Auto:
             break;
     }
     const float a = light.size.x, b = light.size.y;

@@ -7,45 +7,58 @@
 #include "renderer/core/params.h"
 #include "renderer/scene/scene.h"
 #include "renderer/techniques/css/csm_maps.h"
+#include "renderer/techniques/environment_lights.h"
 
 namespace penumbra::techniques::css {
 
-inline constexpr std::array kCssParams = {
-    intParam("order", 4, 1, 16, "M: Fourier terms of the shadow-test expansion"),
-    intParam("map_size", 256, 16, 4096, "shadow map (and basis image) width and height in texels"),
-    enumParam("filter", "sat", "sat|mipmap|auto",
-              "prefilter: summed-area tables, mipmaps, or auto (the paper's choice: mipmaps for "
-              "square lights, SATs for rectangular ones)"),
-    intParam("max_aniso", 8, 1, 16,
-             "mipmap taps along the longer axis of a rectangular light's kernel (anisotropy)"),
-    intParam("mip_taps", 2, 1, 4,
-             "mipmap taps per side of a square kernel (1 = the paper's single trilinear lookup)"),
-    intParam("search_steps", 2, 0, 4,
-             "blocker searches after the first, each over the cone cut at the last z_avg (0 = "
-             "the paper's one search at the near plane)"),
-    floatParam("ring_scale", 1.0, 0.5, 8.0,
-               "ringing suppression: the filtered test is scaled by this about 1/2, then clamped"),
-    floatParam("ring_shift", 0.08, 0.0, 0.5,
-               "ringing suppression: the test is evaluated this far (normalised depth) nearer the "
-               "light, so a surface does not shadow itself"),
-    floatParam("sharpen_a", 30.0, 0.0, 1000.0,
-               "contact sharpening strength A in v^p, p = 1 + A exp(-B (d - z_avg)); 0 = off"),
-    floatParam("sharpen_b", 30.0, 0.0, 10000.0,
-               "contact sharpening falloff B (per unit of normalised depth)"),
-    floatParam("env_threshold", 0.1, 0.001, 0.999,
-               "environment: fitting threshold t (enlarge while E_added / E_enlarged > t)"),
-    intParam("env_lights", 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
-    enumParam("env_shape", "square", "square|rect", "environment: shape of the fitted lights"),
-    intParam("env_face_size", 32, 4, 256, "environment: cube face resolution for the fitting"),
-    stringParam("env_lights_file", "",
-                "environment: lights from a `penumbra fit-lights` JSON (relative to the scene "
-                "file) instead of fitting; empty = fit"),
-};
+// In the order of the `filter` parameter's choices.
+enum class FilterChoice { Sat, Mipmap, Auto };
+inline constexpr EnumKey<FilterChoice, 3> kFilter{"filter", {"sat", "mipmap", "auto"}};
+
+// ORDER, MAX_ANISO, MIP_TAPS and SEARCH_STEPS are the visibility program's #defines; the
+// environment's rows are environment_lights.h's.
+inline constexpr std::array kCssParams = joinParams(
+    std::array{
+        intParam("order", 4, 1, 16, "M: Fourier terms of the shadow-test expansion").define(),
+        intParam("map_size", 256, 16, 4096,
+                 "shadow map (and basis image) width and height in texels")
+            .limitedBy(GlLimit::MaxTextureSize),
+        enumParam(kFilter, FilterChoice::Sat,
+                  "prefilter: summed-area tables, mipmaps, or auto (the paper's choice: mipmaps "
+                  "for square lights, SATs for rectangular ones)"),
+        intParam("max_aniso", 8, 1, 16,
+                 "mipmap taps along the longer axis of a rectangular light's kernel (anisotropy)")
+            .define(),
+        intParam("mip_taps", 2, 1, 4,
+                 "mipmap taps per side of a square kernel (1 = the paper's single trilinear "
+                 "lookup)")
+            .define(),
+        intParam("search_steps", 2, 0, 4,
+                 "blocker searches after the first, each over the cone cut at the last z_avg (0 "
+                 "= the paper's one search at the near plane)")
+            .define(),
+        floatParam("ring_scale", 1.0, 0.5, 8.0,
+                   "ringing suppression: the filtered test is scaled by this about 1/2, then "
+                   "clamped")
+            .uniform(),
+        floatParam("ring_shift", 0.08, 0.0, 0.5,
+                   "ringing suppression: the test is evaluated this far (normalised depth) nearer "
+                   "the light, so a surface does not shadow itself")
+            .uniform(),
+        floatParam("sharpen_a", 30.0, 0.0, 1000.0,
+                   "contact sharpening strength A in v^p, p = 1 + A exp(-B (d - z_avg)); 0 = off")
+            .uniform(),
+        floatParam("sharpen_b", 30.0, 0.0, 10000.0,
+                   "contact sharpening falloff B (per unit of normalised depth)")
+            .uniform(),
+    },
+    kFittedEnvironmentParams);
 
 struct CssSettings {
     int order = 4;
     int map_size = 256;
-    enum class FilterChoice { Auto, Mipmap, Sat } filter = FilterChoice::Sat;
+    using FilterChoice = css::FilterChoice;
+    FilterChoice filter = FilterChoice::Sat;
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;

@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "glsl/techniques/ssm/bindings.glsl"
 #include "renderer/core/error.h"
 #include "renderer/gl/dynamic_buffer.h"
+#include "renderer/gl/param_uniforms.h"
 #include "renderer/passes/bindings.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
@@ -26,28 +28,35 @@ using ssm::DepthTarget;
 using ssm::LightWindow;
 using ssm::SoftShadowTarget;
 
+enum class Precision { Fp32, Fp16 };
+enum class PatchPath { Gpu, Cpu };
+constexpr EnumKey<Precision, 2> kPrecision{"precision", {"fp32", "fp16"}};
+constexpr EnumKey<PatchPath, 2> kPath{"path", {"gpu", "cpu"}};
+
 constexpr std::array kSsmParams = {
-    intParam("map_size", 256, 16, 4096, "occluder map width and height in texels"),
-    intParam("ssm_size", 256, 16, 4096, "soft shadow map (and receiver map) width and height"),
-    enumParam("precision", "fp32", "fp32|fp16",
+    intParam("map_size", 256, 16, 4096, "occluder map width and height in texels")
+        .uniform()
+        .limitedBy(GlLimit::MaxTextureSize),
+    intParam("ssm_size", 256, 16, 4096, "soft shadow map (and receiver map) width and height")
+        .uniform("u_ssm_res"),
+    enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
     boolParam("two_sided", false,
-              "also splat the farthest (back) occluder surfaces into a second map, merged by max"),
-    enumParam("path", "gpu", "gpu|cpu",
+              "also splat the farthest (back) occluder surfaces into a second map, merged by max")
+        .define(),
+    enumParam(kPath, PatchPath::Gpu,
               "gpu: micro-patch list compacted on the GPU, drawn indirect; cpu: read back (4.1)"),
     boolParam("clip", true,
-              "fit each penumbra quad to the farthest receiver under it, and cull it when none"),
+              "fit each penumbra quad to the farthest receiver under it, and cull it when none")
+        .define(),
     floatParam("depth_bias", 0.002, 0.0, 0.5,
-               "a micro-patch shadows a receiver only when nearer by this fraction of its depth"),
+               "a micro-patch shadows a receiver only when nearer by this fraction of its depth")
+        .uniform(),
     intParam("layers", 4, 1, 8,
              "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
              "the paper: objects of role both occlude only and the receivers are the "
              "role-receiver objects"),
 };
-
-constexpr unsigned kBindingCounters = 3;  // splat.vert's Counters
-constexpr unsigned kBindingPatches = 4;   // splat.vert's and compact.comp's Patches
-constexpr unsigned kBindingCommand = 5;   // compact.comp's Command (path=gpu)
 
 // glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches.
 struct DrawCommand {
@@ -57,11 +66,12 @@ struct DrawCommand {
 class Ssm final : public Technique {
 public:
     explicit Ssm(const Params& p)
-        : map_size_(p.getInt("map_size")),
+        : params_(p),
+          map_size_(p.getInt("map_size")),
           ssm_size_(p.getInt("ssm_size")),
-          fp16_(p.getString("precision") == "fp16"),
+          fp16_(p.getEnum(kPrecision) == Precision::Fp16),
           two_sided_(p.getBool("two_sided")),
-          cpu_path_(p.getString("path") == "cpu"),
+          cpu_path_(p.getEnum(kPath) == PatchPath::Cpu),
           clip_(p.getBool("clip")),
           depth_bias_(static_cast<float>(p.getFloat("depth_bias"))),
           layers_(p.getInt("layers")) {}
@@ -191,7 +201,7 @@ public:
                         ssm::readMicroPatches(occluder_maps_[size_t(side)]->depth, map_size_, occ,
                                               side ? 0.0f : 1.0f, scratch_, patches_);
                         patches_buffer_.upload(std::span<const ssm::MicroPatch>(patches_),
-                                               GL_SHADER_STORAGE_BUFFER, kBindingPatches,
+                                               GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                                                sizeof(ssm::MicroPatch));
                     });
                 ctx.pass(side ? "ssm_splat[back]" : "ssm_splat",
@@ -221,14 +231,14 @@ private:
     // level: a splat quad into layer k is culled where layer k has no receiver under it.
     void buildReceiverMax() {
         glUseProgram(max_program_.id());
-        glBindTextureUnit(0, receiver_max_.id());
-        glBindTextureUnit(1, receiver_layers_->depth.id());
+        glBindTextureUnit(SSM_UNIT_RECEIVER_MAX_SOURCE, receiver_max_.id());
+        glBindTextureUnit(SSM_UNIT_RECEIVER_MAX_LAYERS, receiver_layers_->depth.id());
         for (int layer = 0; layer < used_layers_; ++layer) {
             gl::setUniform(max_program_, "u_layer", layer);
             for (int level = 0; level < receiver_levels_; ++level) {
                 const int size = std::max(ssm_size_ >> level, 1);
-                glBindImageTexture(0, receiver_max_.id(), level, GL_FALSE, layer, GL_WRITE_ONLY,
-                                   GL_R32F);
+                glBindImageTexture(SSM_IMAGE_RECEIVER_MAX_TARGET, receiver_max_.id(), level,
+                                   GL_FALSE, layer, GL_WRITE_ONLY, GL_R32F);
                 gl::setUniform(max_program_, "u_from_depth", level == 0 ? 1 : 0);
                 gl::setUniform(max_program_, "u_source_level", level - 1);
                 const GLuint groups = static_cast<GLuint>((size + 7) / 8);
@@ -245,10 +255,10 @@ private:
         const DrawCommand reset{4, 0, 0, 0};
         glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
         glUseProgram(compact_program_.id());
-        glBindTextureUnit(0, occluder_maps_[size_t(side)]->depth.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPatches,
+        glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, occluder_maps_[size_t(side)]->depth.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                          gpu_patches_[size_t(side)].id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCommand, command_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
         gl::setUniform(compact_program_, "u_empty", side ? 0.0f : 1.0f);
         gl::setUniform(compact_program_, "u_occ_near", occ.near);
         gl::setUniform(compact_program_, "u_occ_range", occ.far - occ.near);
@@ -272,36 +282,33 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         const auto& p = splat_program_;
         glUseProgram(p.id());
-        glBindTextureUnit(1, receiver_layers_->depth.id());
-        if (clip_) glBindTextureUnit(2, receiver_max_.id());
-        glBindTextureUnit(6, occluder_maps_[size_t(side)]->ids.id());
-        glBindTextureUnit(7, receiver_layers_->depth.id());
-        glBindTextureUnit(8, receiver_layers_->ids.id());
+        glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER, receiver_layers_->depth.id());
+        if (clip_) glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER_MAX, receiver_max_.id());
+        glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
+        glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
+        glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
         gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
-        gl::setUniform(p, "u_self_horizon", layers_ > 1 ? 1 : 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCounters, counters_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
         gl::setUniform(p, "u_ssm_size", soft.size);
-        gl::setUniform(p, "u_ssm_res", ssm_size_);
         gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
         gl::setUniform(p, "u_receiver_far", soft.far);
         gl::setUniform(p, "u_receiver_near", soft.near);
         gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
-        gl::setUniform(p, "u_depth_bias", depth_bias_);
-        gl::setUniform(p, "u_map_size", map_size_);
+        gl::setParamUniforms(p, kSsmParams, params_);  // ssm_size, depth_bias, map_size
         gl::setUniform(p, "u_occ_lo", occ.lo);
         gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
         glBindVertexArray(empty_vao_.id());
         if (!cpu_path_)
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPatches,
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                              gpu_patches_[size_t(side)].id());
         // The same micro-patches into each receiver layer's soft shadow map (layered SSM).
         for (int layer = 0; layer < used_layers_; ++layer) {
             glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
             gl::setUniform(p, "u_layer", layer);
             if (cpu_path_) {
-                // patches_buffer_ is bound at kBindingPatches by the readback pass.
+                // patches_buffer_ is bound at SSM_BINDING_PATCHES by the readback pass.
                 if (!patches_.empty())
                     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
             } else {
@@ -330,12 +337,13 @@ private:
         glDisable(GL_DEPTH_TEST);
         const auto& p = visibility_program_;
         glUseProgram(p.id());
-        glBindTextureUnit(0, ctx.gbuffer.position().id());
-        glBindTextureUnit(1, ctx.gbuffer.id().id());
-        glBindTextureUnit(2, receives_.id());
-        glBindTextureUnit(3, soft_maps_[0]->occlusion.id());
-        if (two_sided_) glBindTextureUnit(4, soft_maps_[1]->occlusion.id());
-        glBindTextureUnit(5, receiver_layers_->depth.id());
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_POSITION, ctx.gbuffer.position().id());
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_ID, ctx.gbuffer.id().id());
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_RECEIVES, receives_.id());
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM, soft_maps_[0]->occlusion.id());
+        if (two_sided_)
+            glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM_BACK, soft_maps_[1]->occlusion.id());
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_LAYERS, receiver_layers_->depth.id());
         ctx.gbuffer.bindGeometricNormal();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
                          ctx.gpu.casterFlags().id());
@@ -345,7 +353,7 @@ private:
         gl::setUniform(p, "u_self_horizon", layers_ > 1 ? 1 : 0);
         gl::setUniform(p, "u_near", soft.near);
         gl::setUniform(p, "u_range", soft.far - soft.near);
-        gl::setUniform(p, "u_depth_bias", depth_bias_);
+        gl::setParamUniforms(p, kSsmParams, params_);  // depth_bias
         gl::setUniform(p, "u_ssm_lo", soft.lo);
         gl::setUniform(p, "u_ssm_size", soft.size);
         gl::setUniform(p, "u_shadowed", shadowed ? 1 : 0);
@@ -353,9 +361,10 @@ private:
         glUseProgram(0);
     }
 
+    Params params_;
     int map_size_, ssm_size_;
     bool fp16_, two_sided_, cpu_path_, clip_;
-    float depth_bias_;
+    float depth_bias_;  // also the peeling's gap (host)
     int layers_;
     int used_layers_ = 0;  // receiver layers holding a receiver this frame
     gl::Program peel_program_;

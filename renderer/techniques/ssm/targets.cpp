@@ -1,5 +1,6 @@
 // The render targets of `ssm`: see targets.h.
 #include "renderer/techniques/ssm/targets.h"
+#include "glsl/techniques/ssm/bindings.glsl"
 
 #include <string>
 
@@ -81,7 +82,7 @@ int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& pro
     gl::setUniform(program, "u_peel_gap", gap);
     // Each layer is drawn into the scratch map, reading the layer before from the array, and
     // then copied into the array: a layer is never sampled while it is drawn.
-    glBindTextureUnit(5, depth.id());
+    glBindTextureUnit(SSM_UNIT_PEEL_PREVIOUS, depth.id());
     const gl::Query any = gl::createQuery(GL_ANY_SAMPLES_PASSED, "ssm receiver layer");
     int used = 0;
     for (int k = 0; k < layers; ++k) {
@@ -99,13 +100,13 @@ int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& pro
             glDepthFunc(GL_ALWAYS);
             glDepthMask(GL_TRUE);
             glUseProgram(resolve.id());
-            glBindTextureUnit(0, scratch.depth.id());
-            glBindTextureUnit(1, scratch.ids.id());
+            glBindTextureUnit(SSM_UNIT_RESOLVE_DEPTH, scratch.depth.id());
+            glBindTextureUnit(SSM_UNIT_RESOLVE_IDS, scratch.ids.id());
             fullscreen.draw();
             glDepthFunc(GL_LESS);
             glDisable(GL_DEPTH_TEST);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glBindTextureUnit(5, depth.id());
+            glBindTextureUnit(SSM_UNIT_PEEL_PREVIOUS, depth.id());
         } else {
             glCopyImageSubData(scratch.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth.id(),
                                GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size, size, 1);

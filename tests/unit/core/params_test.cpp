@@ -10,11 +10,14 @@ using penumbra::InputError;
 using penumbra::resolveParams;
 
 namespace {
+enum class Mode { Absolute, Relative };
+constexpr penumbra::EnumKey<Mode, 2> kMode{"mode", {"absolute", "relative"}};
+
 constexpr std::array kSpecs = {
     penumbra::intParam("samples", 16, 1, 32, "grid size"),
     penumbra::floatParam("epsilon", 0.01, 0.0, 1.0, "threshold"),
     penumbra::boolParam("jitter", true, "jitter"),
-    penumbra::enumParam("mode", "absolute", "absolute|relative", "comparison"),
+    penumbra::enumParam(kMode, Mode::Absolute, "comparison"),
 };
 
 std::string rejection(const char* json) {
@@ -95,4 +98,70 @@ TEST(Params, StringParameters) {
         EXPECT_NE(std::string(e.what()).find("technique.file: expected a string"),
                   std::string::npos);
     }
+}
+
+// Enum parameters read as C++ enums: the names are the enum's, in enumerator order.
+TEST(Params, EnumsReadAsTheirEnumerators) {
+    static_assert(kMode.name(Mode::Relative) == "relative");
+    static_assert(kSpecs[3].enum_def == "absolute" && kSpecs[3].choices.size() == 2);
+    auto p = resolveParams(kSpecs, nlohmann::json::object(), "s.json: technique");
+    EXPECT_EQ(p.getEnum(kMode), Mode::Absolute);
+    p = resolveParams(kSpecs, nlohmann::json{{"mode", "relative"}}, "s.json: technique");
+    EXPECT_EQ(p.getEnum(kMode), Mode::Relative);
+    EXPECT_EQ(p.getString("mode"), "relative");  // the chosen name, e.g. for printing
+}
+
+TEST(Params, EnumKeyThatIsNotTheTablesFails) {
+    // A key whose names the table's spec was not made from: a bug, never a silent default.
+    enum class Other { Absolute, Relatve };
+    constexpr penumbra::EnumKey<Other, 2> kOther{"mode", {"absolute", "relatve"}};
+    auto p = resolveParams(kSpecs, nlohmann::json{{"mode", "relative"}}, "s.json: technique");
+    EXPECT_THROW(p.getEnum(kOther), std::logic_error);
+}
+
+TEST(Params, EnumChoicesMustBeDistinctAndNamed) {
+    // Evaluated at compile time in a constexpr table these fail to compile; here they throw.
+    enum class E { A, B };
+    static const penumbra::EnumKey<E, 2> twice{"e", {"a", "a"}};
+    static const penumbra::EnumKey<E, 2> unnamed{"e", {"a", ""}};
+    static const penumbra::EnumKey<E, 2> barred{"e", {"a", "b|c"}};
+    EXPECT_ANY_THROW(penumbra::enumParam(twice, E::A, "doc"));
+    EXPECT_ANY_THROW(penumbra::enumParam(unnamed, E::A, "doc"));
+    EXPECT_ANY_THROW(penumbra::enumParam(barred, E::A, "doc"));
+}
+
+// How each parameter reaches the GPU, and the GL limit it is checked against, in the spec and
+// in `techniques --json`.
+TEST(Params, GpuRouteAndLimit) {
+    constexpr std::array kRouted = {
+        penumbra::intParam("budget", 12, 0, 64, "b").uniform(),
+        penumbra::intParam("smooth_radius", 6, 1, 32, "r").uniform("u_radius"),
+        penumbra::intParam("max_aniso", 8, 1, 16, "a").define(),
+        penumbra::intParam("map_size", 256, 16, 4096, "m")
+            .limitedBy(penumbra::GlLimit::MaxTextureSize),
+    };
+    EXPECT_EQ(penumbra::paramGpuName(kRouted[0]), "u_budget");
+    EXPECT_EQ(penumbra::paramGpuName(kRouted[1]), "u_radius");
+    EXPECT_EQ(penumbra::paramGpuName(kRouted[2]), "MAX_ANISO");
+    EXPECT_EQ(penumbra::paramGpuName(kRouted[3]), "");
+    const auto j0 = penumbra::paramSpecJson(kRouted[0]);
+    EXPECT_EQ(j0["gpu"], "uniform");
+    EXPECT_EQ(j0["glsl"], "u_budget");
+    EXPECT_EQ(penumbra::paramSpecJson(kRouted[2])["gpu"], "define");
+    const auto j3 = penumbra::paramSpecJson(kRouted[3]);
+    EXPECT_EQ(j3["gpu"], "host");
+    EXPECT_FALSE(j3.contains("glsl"));
+    EXPECT_EQ(j3["limited_by"], "GL_MAX_TEXTURE_SIZE");
+    EXPECT_FALSE(j0.contains("limited_by"));
+}
+
+TEST(Params, JoinedTablesKeepTheirOrder) {
+    constexpr std::array kA = {penumbra::intParam("a", 1, 0, 2, "a")};
+    constexpr std::array kB = {penumbra::boolParam("b", true, "b"),
+                               penumbra::enumParam(kMode, Mode::Relative, "m")};
+    constexpr auto kJoined = penumbra::joinParams(kA, kB);
+    static_assert(kJoined.size() == 3);
+    EXPECT_EQ(kJoined[0].key, "a");
+    EXPECT_EQ(kJoined[2].key, "mode");
+    EXPECT_EQ(kJoined[2].enum_def, "relative");
 }

@@ -1,0 +1,13 @@
+// Binding points of `adaptive`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/adaptive/bindings.glsl".
+#ifndef PENUMBRA_ADAPTIVE_BINDINGS_GLSL
+#define PENUMBRA_ADAPTIVE_BINDINGS_GLSL
+
+// compare.frag
+#define ADAPTIVE_UNIT_COMPARE_POSITION 0
+#define ADAPTIVE_UNIT_COMPARE_NORMAL 1
+#define ADAPTIVE_UNIT_COMPARE_MAPS 2         // raw linear depths, through a non-comparing sampler
+#define ADAPTIVE_BINDING_COMPARE_TILE_COUNTS 7  // SSBO of uint per tile and quad
+
+#endif

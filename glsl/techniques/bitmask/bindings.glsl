@@ -1,0 +1,39 @@
+// Binding points of `bitmask`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/bitmask/bindings.glsl".
+#ifndef PENUMBRA_BITMASK_BINDINGS_GLSL
+#define PENUMBRA_BITMASK_BINDINGS_GLSL
+
+// Texture units of search.glsl (classify.frag and visibility.frag).
+#define BITMASK_UNIT_SEARCH_POSITION 0
+#define BITMASK_UNIT_SEARCH_NORMAL 1
+#define BITMASK_UNIT_SEARCH_ID 2
+#define BITMASK_UNIT_SEARCH_RECEIVES 3  // per object id: (receives, casts)
+#define BITMASK_UNIT_SEARCH_HSM 4
+#define BITMASK_UNIT_SEARCH_MSSM 5
+// classify.frag
+#define BITMASK_UNIT_CLASSIFY_BUDGET_MAP 12
+// visibility.frag and backproject.glsl, microquads.glsl
+#define BITMASK_UNIT_VISIBILITY_MASKS 6
+#define BITMASK_UNIT_VISIBILITY_AREA 7
+#define BITMASK_UNIT_VISIBILITY_LOQ 8
+#define BITMASK_UNIT_VISIBILITY_RECT_EXTENT 9
+#define BITMASK_UNIT_VISIBILITY_RECT_DEPTH 10
+#define BITMASK_UNIT_VISIBILITY_EDGES 11
+#define BITMASK_UNIT_VISIBILITY_SAMPLES 13
+#define BITMASK_BINDING_VISIBILITY_STATS 3  // SSBO of the statistics counters
+// loq_smooth.frag
+#define BITMASK_UNIT_SMOOTH_LOQ 0
+#define BITMASK_UNIT_SMOOTH_NORMAL 1
+// Image units of hsm.comp, mssm.comp and microrects.comp.
+#define BITMASK_IMAGE_HSM_FINER 0
+#define BITMASK_IMAGE_HSM_COARSER 1
+#define BITMASK_IMAGE_MSSM_HSM_LEVEL 0
+#define BITMASK_IMAGE_MSSM 1
+#define BITMASK_IMAGE_MICRORECTS_HSM0 0
+#define BITMASK_IMAGE_MICRORECTS_EXTENT_IN 1
+#define BITMASK_IMAGE_MICRORECTS_DEPTH_IN 2
+#define BITMASK_IMAGE_MICRORECTS_EXTENT_OUT 3
+#define BITMASK_IMAGE_MICRORECTS_DEPTH_OUT 4
+
+#endif

@@ -1,0 +1,16 @@
+// Binding points of `css`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/css/bindings.glsl".
+#ifndef PENUMBRA_CSS_BINDINGS_GLSL
+#define PENUMBRA_CSS_BINDINGS_GLSL
+
+// basis.comp
+#define CSS_UNIT_BASIS_DEPTH 0
+#define CSS_IMAGE_BASIS 0
+// visibility.frag
+#define CSS_UNIT_VISIBILITY_POSITION 0
+#define CSS_UNIT_VISIBILITY_BASIS 1         // mipmapped basis, or its summed-area table
+#define CSS_UNIT_VISIBILITY_BASIS_SEARCH 3  // the same texture through the search sampler
+#define CSS_UNIT_VISIBILITY_ID 4
+
+#endif

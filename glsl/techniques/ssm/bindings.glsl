@@ -1,0 +1,35 @@
+// Binding points of `ssm`'s shaders (texture and image units, buffers) for its GLSL and
+// its C++ alike: #defines and // comments only, which both preprocessors read (see
+// glsl/common/bindings.glsl); the C++ includes "glsl/techniques/ssm/bindings.glsl".
+#ifndef PENUMBRA_SSM_BINDINGS_GLSL
+#define PENUMBRA_SSM_BINDINGS_GLSL
+
+// peel.frag (receiver layers) and peel_resolve.frag
+#define SSM_UNIT_PEEL_PREVIOUS 5  // the layers peeled so far
+#define SSM_UNIT_RESOLVE_DEPTH 0
+#define SSM_UNIT_RESOLVE_IDS 1
+// receiver_max.comp
+#define SSM_UNIT_RECEIVER_MAX_SOURCE 0
+#define SSM_UNIT_RECEIVER_MAX_LAYERS 1
+#define SSM_IMAGE_RECEIVER_MAX_TARGET 0
+// compact.comp
+#define SSM_UNIT_COMPACT_OCCLUDER 0
+// splat.vert and splat.frag
+#define SSM_UNIT_SPLAT_RECEIVER 1
+#define SSM_UNIT_SPLAT_RECEIVER_MAX 2
+#define SSM_UNIT_SPLAT_OCC_IDS 6
+#define SSM_UNIT_SPLAT_LAYER_DEPTHS 7
+#define SSM_UNIT_SPLAT_LAYER_IDS 8
+// visibility.frag
+#define SSM_UNIT_VISIBILITY_POSITION 0
+#define SSM_UNIT_VISIBILITY_ID 1
+#define SSM_UNIT_VISIBILITY_RECEIVES 2
+#define SSM_UNIT_VISIBILITY_SSM 3
+#define SSM_UNIT_VISIBILITY_SSM_BACK 4
+#define SSM_UNIT_VISIBILITY_LAYERS 5
+// Buffers
+#define SSM_BINDING_COUNTERS 3  // splat.vert's Counters
+#define SSM_BINDING_PATCHES 4   // splat.vert's and compact.comp's Patches
+#define SSM_BINDING_COMMAND 5   // compact.comp's Command (path gpu)
+
+#endif
