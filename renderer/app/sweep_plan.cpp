@@ -64,7 +64,12 @@ SweepPlan planSweep(const SweepRequest& req) {
             if (!techniqueKey(o.key) || req.technique == req.reference_technique)
                 ref.overrides.push_back(o);
         for (const auto& [key, value] : point) {
-            run.overrides.push_back({key, value.dump()});
+            // A varied technique name acts as -t: the scene's technique block is kept only for
+            // the technique it names (another's parameters would be unknown keys).
+            if (key == "technique.name" && value.is_string())
+                run.technique = value.get<std::string>();
+            else
+                run.overrides.push_back({key, value.dump()});
             if (!techniqueKey(key)) ref.overrides.push_back({key, value.dump()});
         }
         ref.overrides.insert(ref.overrides.end(), req.reference_sets.begin(),

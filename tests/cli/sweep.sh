@@ -89,6 +89,18 @@ touch a-file
 expect_exit 2 "^penumbra: --cache: a-file/sub: cannot create folder" -- \
     "$PENUMBRA" "${one[@]}" -o bad --cache a-file/sub
 
+# A varied technique name acts as -t: the scene's technique block (default.json: reference with
+# samples 8) is kept for the technique it names and dropped for another (hard has no samples).
+"$PENUMBRA" sweep "$PENUMBRA_SOURCE_DIR/scenes/default.json" --vary technique.name=hard,reference \
+    --size 64x48 --reference-set technique.samples=4 --repeat 1 --no-report -o by-name \
+    2>log.txt || { cat log.txt; fail "a sweep over technique.name"; }
+python3 - by-name/sweep.json <<'PY'
+import json, sys
+runs = json.load(open(sys.argv[1]))["runs"]
+assert [r["technique"] for r in runs] == ["hard", "reference"], runs
+assert runs[1]["metrics"]["mae"] < runs[0]["metrics"]["mae"], runs
+PY
+
 # Bad input: exit 2, nothing created.
 expect_exit 2 "--vary technique.pcf=1:5:0" -- "$PENUMBRA" sweep "$scene" --vary technique.pcf=1:5:0 -o bad
 expect_exit 2 "technique.pcf" -- "$PENUMBRA" sweep "$scene" -t hard --vary technique.pcf=1,99 -o bad

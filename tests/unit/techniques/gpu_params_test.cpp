@@ -147,7 +147,9 @@ TEST(GpuParams, MapSizesAreLimitedByTheTextureSize) {
     int limited = 0;
     for (const auto& t : techniques::allTechniques())
         for (const auto& s : t.params) {
-            if (s.key == "map_size") EXPECT_EQ(s.limited_by, GlLimit::MaxTextureSize) << t.name;
+            if (s.key == "map_size") {
+                EXPECT_EQ(s.limited_by, GlLimit::MaxTextureSize) << t.name;
+            }
             if (s.limited_by != GlLimit::None) {
                 ++limited;
                 EXPECT_EQ(s.type, ParamType::Int) << t.name << "." << s.key;
