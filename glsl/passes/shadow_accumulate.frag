@@ -29,10 +29,7 @@ uniform int u_count;
 uniform int u_pcf;              // kernel width in texels (1 = a single hard test)
 uniform float u_normal_offset;  // in texels at the receiver's distance
 uniform float u_depth_bias;     // in linear depth units
-uniform vec3 u_light_right;
-uniform vec3 u_light_up;
-uniform vec3 u_light_forward;
-uniform vec3 u_light_centre;
+#include "common/light_frame.glsl"
 
 layout(location = 0) out vec4 o_visibility;
 

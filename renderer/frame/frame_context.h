@@ -49,8 +49,8 @@ public:
     // Runs FN as one named, timed pass. With several lights, a technique's pass (light >= 0)
     // gets "@<light>" appended.
     void pass(const std::string& name, const std::function<void()>& fn);
-    // Binds this light's output layers (see OutputTargets::bind).
-    void bindOutput() { targets_.bind(light); }
+    // Binds this light's output layers and returns their framebuffer (see OutputTargets::bind).
+    GLuint bindOutput() { return targets_.bind(light); }
     // Replaces this light's visibility layer (see OutputTargets::uploadVisibility).
     void uploadVisibility(std::span<const float> rgba) { targets_.uploadVisibility(light, rgba); }
     // Shows STATUS (e.g. a CPU pass's share done and ETA) on the progress line, if any.

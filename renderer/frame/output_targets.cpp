@@ -22,7 +22,7 @@ OutputTargets::OutputTargets(int width, int height, int lights, int diagnostics)
     glNamedFramebufferDrawBuffers(fbo_.id(), static_cast<GLsizei>(bufs.size()), bufs.data());
 }
 
-void OutputTargets::bind(int light) {
+GLuint OutputTargets::bind(int light) {
     glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0, light);
     for (size_t i = 0; i < diagnostics_.size(); ++i)
         glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT1 + static_cast<GLenum>(i),
@@ -31,6 +31,7 @@ void OutputTargets::bind(int light) {
         throw RuntimeError("technique output: framebuffer incomplete");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
+    return fbo_.id();
 }
 
 void OutputTargets::uploadVisibility(int light, std::span<const float> rgba) {

@@ -17,8 +17,9 @@ class OutputTargets {
 public:
     OutputTargets(int width, int height, int lights, int diagnostics);
     // Binds a framebuffer with colour 0 = visibility layer LIGHT, colour 1+i = diagnostic i's
-    // layer LIGHT, viewport = image size.
-    void bind(int light);
+    // layer LIGHT, viewport = image size; returns that framebuffer, for passes that write it
+    // other than by drawing (a blit).
+    GLuint bind(int light);
     // Replaces visibility layer LIGHT with RGBA (width x height x 4 floats, top row first): for
     // techniques that compute visibility on the CPU.
     void uploadVisibility(int light, std::span<const float> rgba);

@@ -12,23 +12,6 @@ namespace {
 constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
 }
 
-void setLightFrameUniforms(const gl::Program& program, const scene::RectLight& light) {
-    gl::setUniform(program, "u_light_centre", light.position);
-    gl::setUniform(program, "u_light_right", light.right());
-    gl::setUniform(program, "u_light_up", light.upAxis());
-    gl::setUniform(program, "u_light_forward", light.forward());
-}
-
-void beginDepthMapDraw(GLuint fbo, int size) {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-}
-
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
                           const Bounds& casters, float weight, int map_size) {
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
@@ -109,17 +92,14 @@ ShadowMapBatch::ShadowMapBatch(int map_size, int layers, bool vertex_layer)
       depth_(gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, map_size, map_size, layers,
                                       "shadow map array")),
       fbo_(gl::createFramebuffer("shadow maps")),
-      program_(gl::buildProgram("shadow depth",
-                                {"passes/shadow_depth.vert", "passes/shadow_depth.frag"},
-                                {{"VERTEX_LAYER", vertex_layer ? "1" : "0"}})) {
+      program_(buildSampleDepthProgram("shadow depth", vertex_layer)) {
     glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
     glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
     if (vertex_layer_) {
         glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-        if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw RuntimeError("shadow maps: framebuffer incomplete");
+        checkFramebuffer(fbo_, "shadow maps");
     }
 }
 

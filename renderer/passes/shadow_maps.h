@@ -15,6 +15,7 @@
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/light_depth.h"
 
 namespace penumbra::passes {
 
@@ -31,19 +32,11 @@ struct SampleView {
 static_assert(sizeof(SampleView) == SAMPLE_VIEW_SIZE, "SampleView: std430 size (mat4, 6 vec4)");
 static_assert(sizeof(SampleView) == 160);
 
-// Binds FBO with a SIZE x SIZE viewport for a depth-tested (LESS, writing), unblended,
-// unculled draw: the state of every light depth map.
-void beginDepthMapDraw(GLuint fbo, int size);
-
-// Sets PROGRAM's u_light_centre, u_light_right, u_light_up and u_light_forward: the light's
-// frame, in which shaders project receivers (glsl/common/sample_view.glsl's convention).
-void setLightFrameUniforms(const gl::Program& program, const scene::RectLight& light);
-
 // The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
                           const Bounds& casters, float weight, int map_size);
 
-// A depth-texture array of LAYERS maps of MAP_SIZE^2 and the program that fills it.
+// A depth-texture array of LAYERS maps of MAP_SIZE^2 and the light depth program that fills it.
 class ShadowMapBatch {
 public:
     ShadowMapBatch(int map_size, int layers, bool vertex_layer);

@@ -30,16 +30,13 @@ uniform float u_gamma;    // largest depth difference still considered equal
 uniform int u_tests;           // 1: compare hard-shadow test results instead of depths
 uniform float u_normal_offset;  // as in the shadow test: texels at the receiver's distance
 uniform float u_depth_bias;
-uniform vec3 u_light_centre;
+#include "common/light_frame.glsl"
 uniform int u_relative;   // 0: |d_a - d_b| < gamma (eq. 3); 1: |1 - d_a / d_b| < gamma (eq. 7)
 uniform int u_tile_size;  // pixels per tile side, 0: no tile counts
 uniform int u_tiles_x;
 uniform int u_tile_slot;  // this comparison's first counter: slot * tile count
 uniform int u_level;      // quadtree depth of the comparison, written (+1) to the diagnostic
 uniform int u_stride;     // G-buffer pixels per comparison pixel along x and y
-uniform vec3 u_light_right;
-uniform vec3 u_light_up;
-uniform vec3 u_light_forward;
 
 layout(location = 0) out vec4 o_level;  // max-blended: the deepest disagreement here, + 1
 

@@ -22,10 +22,7 @@ layout(binding = BITMASK_UNIT_SEARCH_MSSM) uniform sampler2DArray u_mssm;
 uniform int u_mssm_base;                            // the HSM level that is MSSM layer 0
 #endif
 
-uniform vec3 u_light_centre;
-uniform vec3 u_light_right;
-uniform vec3 u_light_up;
-uniform vec3 u_light_forward;
+#include "common/light_frame.glsl"
 uniform vec2 u_light_half;     // half the light's size
 uniform vec2 u_win_lo;         // the map's window at distance 1
 uniform vec2 u_texel;          // window units per level-0 texel

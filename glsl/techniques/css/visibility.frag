@@ -38,10 +38,7 @@ layout(binding = CSS_UNIT_VISIBILITY_BASIS_SEARCH) uniform sampler2DArray u_basi
 // The G-buffer's object ids
 layout(binding = CSS_UNIT_VISIBILITY_ID) uniform isampler2D u_id;
 
-uniform vec3 u_light_centre;
-uniform vec3 u_light_right;
-uniform vec3 u_light_up;
-uniform vec3 u_light_forward;
+#include "common/light_frame.glsl"
 uniform vec2 u_light_size;   // D along right and up
 uniform vec2 u_window_lo;    // the map's window at distance 1 in the light's frame
 uniform vec2 u_window_size;

@@ -10,7 +10,7 @@ in vec3 v_normal;
 layout(binding = SSM_UNIT_PEEL_PREVIOUS) uniform sampler2DArray u_previous;
 uniform int u_layer;
 uniform float u_peel_gap;
-uniform vec3 u_light_centre;
+#include "common/light_frame.glsl"
 uniform int u_object_id;
 layout(location = 0) out int o_id;
 

@@ -27,10 +27,7 @@ layout(binding = SSM_UNIT_VISIBILITY_SSM_BACK) uniform sampler2DArray u_ssm_back
 #endif
 // Receiver depth per layer, 1 = none
 layout(binding = SSM_UNIT_VISIBILITY_LAYERS) uniform sampler2DArray u_layers;
-uniform vec3 u_light_centre;
-uniform vec3 u_light_right;
-uniform vec3 u_light_up;
-uniform vec3 u_light_forward;
+#include "common/light_frame.glsl"
 uniform vec2 u_light_size;
 uniform vec2 u_ssm_lo;
 uniform vec2 u_ssm_size;

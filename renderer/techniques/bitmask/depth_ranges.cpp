@@ -4,9 +4,8 @@
 
 #include <algorithm>
 
-#include "renderer/core/error.h"
 #include "renderer/gl/program.h"
-#include "renderer/passes/shadow_maps.h"
+#include "renderer/passes/light_depth.h"
 
 namespace penumbra::techniques::bitmask {
 namespace {
@@ -21,7 +20,9 @@ GLuint groupsFor(int size) {
 }  // namespace
 
 DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
-    : map_size_(map_size), levels_(log2Of(map_size) + 1) {
+    : map_size_(map_size),
+      levels_(log2Of(map_size) + 1),
+      depth_pass_("bitmask light depth", passes::LightDepthPass::Output::Distance) {
     hsm_ = gl::createTexture(GL_TEXTURE_2D, "bitmask hsm");
     glTextureStorage2D(hsm_.id(), levels_, GL_RG32F, map_size_, map_size_);
     glTextureParameteri(hsm_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
@@ -32,11 +33,7 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
     fbo_ = gl::createFramebuffer("bitmask light depth map");
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hsm_.id(), 0);
     glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError("bitmask: light depth map: framebuffer incomplete");
-    depth_program_ = gl::buildProgram(
-        "bitmask light depth",
-        {"techniques/bitmask/light_depth.vert", "techniques/bitmask/light_depth.frag"});
+    passes::checkFramebuffer(fbo_, "bitmask light depth map");
     hsm_program_ = gl::buildProgram("bitmask hsm", {"techniques/bitmask/hsm.comp"});
     if (accel == Accel::Hsm) return;
     ysm_ = accel == Accel::Ysm;
@@ -54,11 +51,7 @@ void DepthRanges::renderMap(const passes::GpuScene& scene, const scene::RectLigh
     const float empty[4] = {kEmpty, kEmpty, 0.0f, 0.0f}, far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
-    glUseProgram(depth_program_.id());
-    gl::setUniform(depth_program_, "u_view_proj", view_proj);
-    gl::setUniform(depth_program_, "u_light_centre", light.position);
-    gl::setUniform(depth_program_, "u_light_forward", light.forward());
-    scene.draw(depth_program_, passes::GpuScene::Filter::Casters);
+    depth_pass_.draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj});
     glDisable(GL_DEPTH_TEST);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -8,6 +8,7 @@
 
 #include "renderer/gl/handles.h"
 #include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/light_depth.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::techniques::bitmask {
@@ -44,7 +45,8 @@ private:
     bool ysm_ = false;
     gl::Texture hsm_, depth_, mssm_;
     gl::Framebuffer fbo_;
-    gl::Program depth_program_, hsm_program_, mssm_program_;
+    passes::LightDepthPass depth_pass_;  // distances into HSM level 0
+    gl::Program hsm_program_, mssm_program_;
 };
 
 }  // namespace penumbra::techniques::bitmask

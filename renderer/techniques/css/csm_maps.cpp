@@ -10,15 +10,15 @@
 
 namespace penumbra::techniques::css {
 
-ssm::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
-                           const passes::Bounds& scene) {
-    ssm::LightWindow w = ssm::windowOf(light, casters);
+passes::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
+                              const passes::Bounds& scene) {
+    passes::LightWindow w = passes::windowOf(light, casters);
     if (w.empty()) return w;
-    w.far = std::max(w.far, ssm::windowOf(light, scene).far);
+    w.far = std::max(w.far, passes::windowOf(light, scene).far);
     return w;
 }
 
-DepthRange depthRange(const ssm::LightWindow& w, int order, float shift) {
+DepthRange depthRange(const passes::LightWindow& w, int order, float shift) {
     const float m = std::min(shift + 0.5f / static_cast<float>(order), 0.3f);
     const float pad = m * (w.far - w.near) / (1.0f - 2.0f * m);
     return {w.near - pad, w.far + pad};
@@ -28,8 +28,7 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
     : map_size_(map_size),
       layers_(basisLayers(order)),
       depth_(map_size, "css shadow map"),
-      depth_program_(gl::buildProgram("css depth",
-                                      {"techniques/ssm/depth.vert", "techniques/ssm/depth.frag"})),
+      depth_pass_("css depth", passes::LightDepthPass::Output::Depth),
       basis_program_(gl::buildProgram("css basis", {"techniques/css/basis.comp"},
                                       {{"ORDER", std::to_string(order)}})) {
     const int levels = mipmap ? std::bit_width(static_cast<unsigned>(map_size)) : 1;
@@ -53,9 +52,9 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
 }
 
 void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
-                          const ssm::LightWindow& w, const DepthRange& range) {
-    depth_.render(scene, depth_program_, passes::GpuScene::Filter::Casters, w.viewProj(light),
-                  light, range.near, 1.0f / (range.far - range.near), false);
+                          const passes::LightWindow& w, const DepthRange& range) {
+    depth_.render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light,
+                  {w.viewProj(light), range.near, 1.0f / (range.far - range.near)}, false);
 }
 
 void CsmMaps::buildBasis() {

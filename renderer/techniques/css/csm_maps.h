@@ -8,9 +8,9 @@
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/light_depth.h"
+#include "renderer/passes/light_windows.h"
 #include "renderer/passes/summed_area_table.h"
-#include "renderer/techniques/ssm/light_windows.h"
-#include "renderer/techniques/ssm/targets.h"
 
 namespace penumbra::techniques::css {
 
@@ -21,8 +21,8 @@ constexpr int basisLayers(int order) {
 
 // The light-centred view of the map: the casters' window (x, y) with a depth range from the
 // nearest caster to the farthest point of the scene, so every receiver has depth in [0, 1].
-ssm::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
-                           const passes::Bounds& scene);
+passes::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
+                              const passes::Bounds& scene);
 
 // The depth normalisation of the map: real depths fill [m, 1 - m], m = min(shift + 0.5 / M,
 // 0.3), and empty texels hold 1. The Fourier test is periodic (period 2 in d - z) and rings
@@ -32,7 +32,7 @@ ssm::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& 
 struct DepthRange {
     float near = 0.0f, far = 1.0f;  // distances along the light's forward axis of depth 0 and 1
 };
-DepthRange depthRange(const ssm::LightWindow& window, int order, float shift);
+DepthRange depthRange(const passes::LightWindow& window, int order, float shift);
 
 class CsmMaps {
 public:
@@ -43,7 +43,7 @@ public:
 
     // The caster depth map seen through WINDOW.
     void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
-                     const ssm::LightWindow& window, const DepthRange& range);
+                     const passes::LightWindow& window, const DepthRange& range);
     // The basis images of the depth map (centred on their empty-texel values).
     void buildBasis();
     // Prefilters the basis with FILTER; filtered(FILTER) is then ready for lookups.
@@ -57,11 +57,12 @@ public:
 
 private:
     int map_size_, layers_;
-    ssm::DepthTarget depth_;
+    passes::LightDepthTarget depth_;
     gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
     gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;
-    gl::Program depth_program_, basis_program_;
+    passes::LightDepthPass depth_pass_;
+    gl::Program basis_program_;
 };
 
 }  // namespace penumbra::techniques::css

@@ -35,7 +35,7 @@ public:
         const scene::RectLight& light = ctx.currentLight();
         const CsmMaps::Filter filter = css::filterFor(settings_, light);
         ensureResources(filter);
-        const ssm::LightWindow window =
+        const passes::LightWindow window =
             css::mapWindow(light, ctx.gpu.casterBounds(), ctx.gpu.sceneBounds());
         const css::DepthRange range =
             css::depthRange(window, settings_.order, settings_.ring_shift);
@@ -77,7 +77,7 @@ private:
     }
 
     void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
-                    const ssm::LightWindow& w, const css::DepthRange& range,
+                    const passes::LightWindow& w, const css::DepthRange& range,
                     CsmMaps::Filter filter) {
         ctx.bindOutput();
         const float lit[4] = {1, 0, 0, 0}, zero[4] = {0, 0, 0, 0};

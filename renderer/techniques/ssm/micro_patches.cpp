@@ -3,7 +3,7 @@
 
 namespace penumbra::techniques::ssm {
 
-void readMicroPatches(const gl::Texture& depth, int map_size, const LightWindow& window,
+void readMicroPatches(const gl::Texture& depth, int map_size, const passes::LightWindow& window,
                       float empty, std::vector<float>& scratch, std::vector<MicroPatch>& patches) {
     const size_t n = static_cast<size_t>(map_size) * static_cast<size_t>(map_size);
     scratch.resize(n);

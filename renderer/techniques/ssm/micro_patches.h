@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "renderer/gl/handles.h"
-#include "renderer/techniques/ssm/light_windows.h"
+#include "renderer/passes/light_windows.h"
 
 namespace penumbra::techniques::ssm {
 
@@ -21,7 +21,7 @@ static_assert(sizeof(MicroPatch) == 8);
 
 // Reads the MAP_SIZE^2 linear-depth occluder map DEPTH (window WINDOW) back and appends one
 // micro-patch per texel that is not EMPTY (the cleared depth) to PATCHES (cleared first).
-void readMicroPatches(const gl::Texture& depth, int map_size, const LightWindow& window,
+void readMicroPatches(const gl::Texture& depth, int map_size, const passes::LightWindow& window,
                       float empty, std::vector<float>& scratch, std::vector<MicroPatch>& patches);
 
 }  // namespace penumbra::techniques::ssm

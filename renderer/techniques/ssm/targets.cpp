@@ -2,63 +2,9 @@
 #include "renderer/techniques/ssm/targets.h"
 #include "glsl/techniques/ssm/bindings.glsl"
 
-#include <string>
-
-#include "renderer/core/error.h"
+#include <algorithm>
 
 namespace penumbra::techniques::ssm {
-namespace {
-
-void checkComplete(const gl::Framebuffer& fbo, const char* label) {
-    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError(std::string("ssm: ") + label + ": framebuffer incomplete");
-}
-
-}  // namespace
-
-DepthTarget::DepthTarget(int size_, const char* label, bool with_ids)
-    : size(size_),
-      depth(gl::createTexture2D(GL_DEPTH_COMPONENT32F, size_, size_, label)),
-      fbo(gl::createFramebuffer(label)) {
-    glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-    if (with_ids) {
-        ids = gl::createTexture2D(GL_R32I, size_, size_, label);
-        glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, ids.id(), 0);
-    }
-    glNamedFramebufferDrawBuffer(fbo.id(), with_ids ? GL_COLOR_ATTACHMENT0 : GL_NONE);
-    glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
-    checkComplete(fbo, label);
-}
-
-void DepthTarget::render(const passes::GpuScene& scene, const gl::Program& program,
-                         passes::GpuScene::Filter filter, const glm::mat4& view_proj,
-                         const scene::RectLight& light, float near, float inv_range,
-                         bool farthest) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(farthest ? GL_GREATER : GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    const float clear = farthest ? 0.0f : 1.0f;
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clear);
-    if (ids) {
-        const GLint none = -1;
-        glClearNamedFramebufferiv(fbo.id(), GL_COLOR, 0, &none);
-    }
-    glUseProgram(program.id());
-    gl::setUniform(program, "u_view_proj", view_proj);
-    gl::setUniform(program, "u_light_centre", light.position);
-    gl::setUniform(program, "u_light_forward", light.forward());
-    gl::setUniform(program, "u_near", near);
-    gl::setUniform(program, "u_inv_range", inv_range);
-    scene.draw(program, filter);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
 
 ReceiverLayers::ReceiverLayers(int size_, int layers_, const char* label)
     : size(size_),
@@ -71,13 +17,13 @@ ReceiverLayers::ReceiverLayers(int size_, int layers_, const char* label)
       last_fbo(gl::createFramebuffer(label)) {
     glNamedFramebufferTextureLayer(last_fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0, layers - 1);
     glNamedFramebufferDrawBuffer(last_fbo.id(), GL_NONE);
-    checkComplete(last_fbo, label);
+    passes::checkFramebuffer(last_fbo, label);
 }
 
-int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& program,
-                           passes::GpuScene::Filter filter, const glm::mat4& view_proj,
-                           const scene::RectLight& light, float near, float inv_range,
-                           float gap) const {
+int ReceiverLayers::render(const passes::GpuScene& scene, const passes::LightDepthPass& peel,
+                           passes::GpuScene::Filter filter, const scene::RectLight& light,
+                           const passes::LightDepthView& view, float gap) const {
+    const gl::Program& program = peel.program();
     glUseProgram(program.id());
     gl::setUniform(program, "u_peel_gap", gap);
     // Each layer is drawn into the scratch map, reading the layer before from the array, and
@@ -90,7 +36,7 @@ int ReceiverLayers::render(const passes::GpuScene& scene, const gl::Program& pro
         gl::setUniform(program, "u_layer", k);
         const bool farthest = k > 0 && k == layers - 1;
         glBeginQuery(GL_ANY_SAMPLES_PASSED, any.id());
-        scratch.render(scene, program, filter, view_proj, light, near, inv_range, farthest);
+        scratch.render(scene, peel, filter, light, view, farthest);
         glEndQuery(GL_ANY_SAMPLES_PASSED);
         if (farthest) {
             // Cleared to 0 for the greater test: written with 1 for "none" instead.
@@ -140,8 +86,21 @@ SoftShadowTarget::SoftShadowTarget(int size, int layers, GLenum format, const ch
         fbos.push_back(gl::createFramebuffer(label));
         glNamedFramebufferTextureLayer(fbos.back().id(), GL_COLOR_ATTACHMENT0, occlusion.id(), 0,
                                        k);
-        checkComplete(fbos.back(), label);
+        passes::checkFramebuffer(fbos.back(), label);
     }
+}
+
+passes::LightWindow softShadowWindow(const scene::RectLight& light,
+                                     const passes::LightWindow& occluders,
+                                     const passes::Bounds& receivers) {
+    passes::LightWindow r = passes::windowOf(light, receivers);
+    if (r.empty() || occluders.empty()) return {};
+    const float k = std::max(1.0f / occluders.near - 1.0f / r.far, 0.0f);
+    const glm::vec2 grow = 0.5f * light.size * k;
+    const glm::vec2 lo = glm::max(occluders.lo - grow, r.lo);
+    const glm::vec2 hi = glm::min(occluders.lo + occluders.size + grow, r.lo + r.size);
+    r.lo = lo, r.size = glm::max(hi - lo, glm::vec2(0.0f));
+    return r;
 }
 
 }  // namespace penumbra::techniques::ssm

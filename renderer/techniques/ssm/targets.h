@@ -1,6 +1,6 @@
-// The render targets of `ssm`: linear-depth maps (occluder map, layered receiver maps peeled
-// from the light's centre) and soft shadow maps (summed micro-patch occlusion per receiver
-// layer, blended additively at FP32 or FP16).
+// The render targets of `ssm` beyond the shared light depth maps: layered receiver maps peeled
+// from the light's centre, soft shadow maps (summed micro-patch occlusion per receiver layer,
+// blended additively at FP32 or FP16) and the soft shadow maps' window.
 #pragma once
 
 #include <vector>
@@ -11,25 +11,10 @@
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gpu_scene.h"
+#include "renderer/passes/light_depth.h"
+#include "renderer/passes/light_windows.h"
 
 namespace penumbra::techniques::ssm {
-
-// A depth target of SIZE^2 texels (linear depth written by depth.frag), with WITH_IDS also the
-// object id of the surface at each texel (R32I, -1 where none).
-struct DepthTarget {
-    int size;
-    gl::Texture depth;
-    gl::Texture ids;  // WITH_IDS only
-    gl::Framebuffer fbo;
-    DepthTarget(int size, const char* label, bool with_ids = false);
-
-    // Renders the objects FILTER selects through VIEW_PROJ with PROGRAM (techniques/ssm/depth.*),
-    // storing (distance along LIGHT's forward axis - NEAR) * INV_RANGE: the nearest surface, or
-    // the farthest when FARTHEST. Used by `ssm` and `css`.
-    void render(const passes::GpuScene& scene, const gl::Program& program,
-                passes::GpuScene::Filter filter, const glm::mat4& view_proj,
-                const scene::RectLight& light, float near, float inv_range, bool farthest) const;
-};
 
 // LAYERS receiver depth maps of SIZE^2 texels from the light's centre (a DEPTH32F array):
 // layer 0 the nearest light-facing receiver surface, layer k the nearest one beyond layer k - 1
@@ -39,18 +24,18 @@ struct ReceiverLayers {
     int size, layers;
     gl::Texture depth;  // 2D array, LAYERS layers
     gl::Texture ids;    // 2D array of the surfaces' object ids (R32I, -1 = none)
-    DepthTarget scratch;
+    passes::LightDepthTarget scratch;
     gl::Program resolve;       // techniques/ssm/peel_resolve.frag (the farthest layer)
     gl::Framebuffer last_fbo;  // the array's last layer as a depth target
     passes::Fullscreen fullscreen;
     ReceiverLayers(int size, int layers, const char* label);
 
-    // Peels the objects FILTER selects through VIEW_PROJ with PROGRAM (techniques/ssm/depth.vert
-    // with PEEL, peel.frag), each layer at least GAP (normalised depth) beyond the one before.
-    // Stops at the first empty layer; returns the layers that hold a receiver.
-    int render(const passes::GpuScene& scene, const gl::Program& program,
-               passes::GpuScene::Filter filter, const glm::mat4& view_proj,
-               const scene::RectLight& light, float near, float inv_range, float gap) const;
+    // Peels the objects FILTER selects through VIEW with PEEL (the light depth pass with
+    // techniques/ssm/peel.frag), each layer at least GAP (normalised depth) beyond the one
+    // before. Stops at the first empty layer; returns the layers that hold a receiver.
+    int render(const passes::GpuScene& scene, const passes::LightDepthPass& peel,
+               passes::GpuScene::Filter filter, const scene::RectLight& light,
+               const passes::LightDepthView& view, float gap) const;
 };
 
 // Soft shadow maps of SIZE^2 texels in FORMAT (GL_R32F or GL_R16F), one per receiver layer (a
@@ -60,5 +45,12 @@ struct SoftShadowTarget {
     std::vector<gl::Framebuffer> fbos;  // one per layer
     SoftShadowTarget(int size, int layers, GLenum format, const char* label);
 };
+
+// The soft-shadow-map window: the occluder window grown by the widest penumbra (section 3.3,
+// half the light over the nearest occluder depth, less its value at the farthest receiver),
+// clipped to the receivers' window, with the receivers' depth range.
+passes::LightWindow softShadowWindow(const scene::RectLight& light,
+                                     const passes::LightWindow& occluders,
+                                     const passes::Bounds& receivers);
 
 }  // namespace penumbra::techniques::ssm

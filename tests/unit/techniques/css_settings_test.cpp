@@ -54,7 +54,7 @@ TEST(CssSettings, BasisLayout) {
 }
 
 TEST(CssSettings, DepthRangeKeepsMargins) {
-    techniques::ssm::LightWindow w;
+    passes::LightWindow w;
     w.near = 2.0f, w.far = 6.0f;
     for (int order : {1, 4, 16}) {
         for (float shift : {0.0f, 0.08f}) {

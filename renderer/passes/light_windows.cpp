@@ -1,11 +1,11 @@
-// The light-centred views of `ssm`: see light_windows.h.
-#include "renderer/techniques/ssm/light_windows.h"
+// Light-centred views: see light_windows.h.
+#include "renderer/passes/light_windows.h"
 
 #include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace penumbra::techniques::ssm {
+namespace penumbra::passes {
 namespace {
 constexpr float kMaxTan = 5.67f;  // widest half-angle of a view: 80 degrees
 }
@@ -17,7 +17,7 @@ glm::mat4 LightWindow::viewProj(const scene::RectLight& light) const {
     return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far) * view;
 }
 
-LightWindow windowOf(const scene::RectLight& light, const passes::Bounds& bounds) {
+LightWindow windowOf(const scene::RectLight& light, const Bounds& bounds) {
     LightWindow w;
     if (bounds.empty()) return w;
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
@@ -45,7 +45,7 @@ LightWindow windowOf(const scene::RectLight& light, const passes::Bounds& bounds
     return w;
 }
 
-LightWindow occluderWindow(const scene::RectLight& light, const passes::Bounds& casters) {
+LightWindow occluderWindow(const scene::RectLight& light, const Bounds& casters) {
     LightWindow w = windowOf(light, casters);
     if (w.empty()) return w;
     const float aspect = light.size.x / light.size.y;
@@ -58,16 +58,4 @@ LightWindow occluderWindow(const scene::RectLight& light, const passes::Bounds& 
     return w;
 }
 
-LightWindow softShadowWindow(const scene::RectLight& light, const LightWindow& occluders,
-                             const passes::Bounds& receivers) {
-    LightWindow r = windowOf(light, receivers);
-    if (r.empty() || occluders.empty()) return {};
-    const float k = std::max(1.0f / occluders.near - 1.0f / r.far, 0.0f);
-    const glm::vec2 grow = 0.5f * light.size * k;
-    const glm::vec2 lo = glm::max(occluders.lo - grow, r.lo);
-    const glm::vec2 hi = glm::min(occluders.lo + occluders.size + grow, r.lo + r.size);
-    r.lo = lo, r.size = glm::max(hi - lo, glm::vec2(0.0f));
-    return r;
-}
-
-}  // namespace penumbra::techniques::ssm
+}  // namespace penumbra::passes

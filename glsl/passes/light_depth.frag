@@ -1,0 +1,27 @@
+#version 450 core
+// Stores light_depth.vert's depth: in the depth buffer (linear, so receivers compare depths
+// linearly; nearest or farthest surface by the host's depth test), with IDS also the object id
+// in colour 0; with DISTANCE, the distance as (min, max) in colour 0 (the level 0 of a min/max
+// pyramid) under the rasteriser's own depth.
+#ifndef IDS
+#define IDS 0
+#endif
+#ifndef DISTANCE
+#define DISTANCE 0
+#endif
+in float v_depth;
+#if DISTANCE
+layout(location = 0) out vec2 o_range;
+void main() { o_range = vec2(v_depth); }
+#else
+#if IDS
+uniform int u_object_id;
+layout(location = 0) out int o_id;
+#endif
+void main() {
+    gl_FragDepth = clamp(v_depth, 0.0, 1.0);
+#if IDS
+    o_id = u_object_id;
+#endif
+}
+#endif

@@ -1,0 +1,185 @@
+// The `adaptive` technique's class, shared by its files: adaptive.cpp (parameters, resources,
+// the order of passes, evaluation and statistics) and quadtree_refinement.cpp (rendering the
+// light-sample maps and choosing the quadtree cells to split).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/shadow_maps.h"
+#include "renderer/techniques/adaptive/error_budget.h"
+#include "renderer/techniques/adaptive/light_quadtree.h"
+#include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::techniques::adaptive {
+
+enum class Metric { Error, Global, Tile };
+enum class Compare { Auto, Depth, ShadowTest };
+enum class GammaMode { Absolute, Relative };
+enum class Reprojection { Camera, LightCentre };
+enum class MetricArea { Map, Screen };
+enum class Subdivision { Auto, Quad, Linear };
+enum class Evaluation { Array, Accumulate };
+using Weighting = LightQuadtree::Weighting;
+
+inline constexpr EnumKey<Metric, 3> kMetric{"metric", {"error", "global", "tile"}};
+inline constexpr EnumKey<Compare, 3> kCompare{"compare", {"auto", "depth", "shadow_test"}};
+inline constexpr EnumKey<GammaMode, 2> kGammaMode{"gamma_mode", {"absolute", "relative"}};
+inline constexpr EnumKey<Reprojection, 2> kReprojection{"reprojection", {"camera", "light_centre"}};
+inline constexpr EnumKey<MetricArea, 2> kMetricArea{"metric_area", {"map", "screen"}};
+inline constexpr EnumKey<Subdivision, 3> kSubdivision{"subdivision", {"auto", "quad", "linear"}};
+inline constexpr EnumKey<Weighting, 3> kWeights{"weights", {"area", "paper", "equal"}};
+inline constexpr EnumKey<Evaluation, 2> kEvaluation{"evaluation", {"array", "accumulate"}};
+
+inline constexpr std::array kAdaptiveParams = {
+    enumParam(kMetric, Metric::Error,
+              "error: split the cells whose corner maps leave the largest estimated visibility "
+              "error until the frame's estimate is at most target_error (independent of the "
+              "image size); global: eq. 4 with epsilon over the whole frame (paper); tile: "
+              "refine when any screen tile's disagreeing share reaches tile_epsilon (the local "
+              "metric 5.1 asks for)"),
+    floatParam("target_error", 0.02, 0.0, 1.0,
+               "metric \"error\": the shadow-region error of visibility (mean |V - V_true| over "
+               "shadowed pixels) that the light's subdivision may leave; a cell's estimate is "
+               "1/4 x its share of the light x its disagreeing over the shadowed pixels"),
+    floatParam("epsilon", 0.003, 0.0, 1.0,
+               "metric \"global\": refine when disagreeing pixels / metric area >= epsilon "
+               "(eq. 4)"),
+    floatParam("gamma", 0.01, 0.0, 1.0,
+               "two stored depths are equal when they differ by less than gamma (eq. 3 / 7)"),
+    enumParam(kCompare, Compare::Auto,
+              "what two maps are compared on: their stored depths (paper, with gamma) or their "
+              "hard-shadow test results for the receiver; auto: shadow_test for metric "
+              "\"error\" (disagreeing tests are where visibility varies), depth otherwise"),
+    enumParam(kGammaMode, GammaMode::Absolute,
+              "depth test: absolute |d_a - d_b| (eq. 3) or relative |1 - d_a/d_b| (eq. 7)"),
+    enumParam(kReprojection, Reprojection::Camera,
+              "where maps are compared: the camera view (view-dependent) or a map_size^2 view "
+              "from the light's centre (view-independent, section 4.1)"),
+    intParam("tile_size", 32, 4, 1024, "tile side in pixels for metric \"tile\""),
+    floatParam("tile_epsilon", 0.05, 0.0, 1.0,
+               "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
+    enumParam(kMetricArea, MetricArea::Map,
+              "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
+    intParam("compare_stride", 2, 1, 8,
+             "compare at every k-th pixel along x and y of the comparison view, counting each "
+             "disagreement as k^2 pixels (1: every pixel, as the paper)"),
+    intParam("max_depth", 3, 0, 8, "deepest quadtree level"),
+    intParam("max_maps", 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
+    enumParam(kSubdivision, Subdivision::Auto,
+              "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
+              "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
+    enumParam(kWeights, Weighting::Area,
+              "sample weights, normalised: area (each leaf cell's area shared by its corners), "
+              "paper (1/(2^d+1)^2, eq. 5/6) or equal"),
+    enumParam(kEvaluation, Evaluation::Array,
+              "array: all maps in one pass over a texture array (3.4.2); accumulate: each map "
+              "added to the accumulation buffer right after it is rendered (3.4.1)"),
+    boolParam("jitter", true,
+              "move each sample to a random point of its finest-grid cell (false: the paper's "
+              "regular lattice, which aliases with edges parallel to the light's)"),
+    intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
+    intParam("pcf", 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
+    mapSizeParam(1024),
+    kNormalOffsetParam,
+    kDepthBiasParam,
+};
+
+// Maps rendered per draw into the scratch array before they are copied to their layers.
+inline constexpr int kScratchLayers = 16;
+
+// What refining a light's quadtree found, for the statistics.
+struct Refinement {
+    int comparisons = 0;
+    bool budget_hit = false;
+    double estimated_error = 0.0;  // metric "error"
+};
+
+class Adaptive final : public Technique {
+public:
+    explicit Adaptive(const Params& p);
+
+    void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override;
+
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        return {{"depth", DiagnosticChannel::Combine::Max}};
+    }
+
+    void render(frame::FrameContext& ctx) override;
+
+private:
+    // Renders the corner maps and refines the light's quadtree level by level where maps
+    // disagree (RECEIVERS: the pixels compared; AREA: the metric's pixel count).
+    Refinement refine(frame::FrameContext& ctx, LightQuadtree& tree,
+                      const passes::GBuffer& receivers, double area);
+
+    // Adds the light's maps, weighted, into its visibility.
+    void evaluate(frame::FrameContext& ctx, const LightQuadtree& tree);
+
+    // The light's statistics, summed (or maxed) over lights.
+    void addStatistics(frame::FrameContext& ctx, const LightQuadtree& tree,
+                       const Refinement& r) const;
+
+    // Whether splitting CELL keeps the light's maps within max_maps.
+    bool fitsMapBudget(const LightQuadtree& tree, const QuadtreeCell& cell) const;
+
+    // Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
+    // order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
+    std::vector<QuadtreeCell> splitByError(LightQuadtree& tree,
+                                           const std::vector<QuadtreeCell>& cells,
+                                           const std::vector<CompareResult>& counts,
+                                           double shadowed, ErrorBudget& budget,
+                                           bool& budget_hit) const;
+
+    // Splits the CELLS whose comparisons (COUNTS, in comparisons() order) fail the metric, most
+    // disagreeing first so that the map budget goes where it matters; returns their children.
+    std::vector<QuadtreeCell> splitCells(LightQuadtree& tree,
+                                         const std::vector<QuadtreeCell>& cells,
+                                         const std::vector<CompareResult>& counts, double area,
+                                         bool& budget_hit) const;
+
+    // A perspective view from the light's centre along its axis, covering every caster as
+    // seen from there, and every receiver behind them (section 4.1's reprojection target).
+    passes::CameraMatrices lightCentreView(const frame::FrameContext& ctx) const;
+
+    // Renders the samples without a map yet into their layers of maps_ (one pass per level).
+    void renderNewMaps(frame::FrameContext& ctx, const LightQuadtree& tree, int level);
+
+    // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).
+    void copyToMaps(int base, int count);
+
+    // Adds the weighted tests of BATCH's COUNT views from VIEW_BASE to the bound visibility.
+    void addToVisibility(frame::FrameContext& ctx, const passes::ShadowMapBatch& batch,
+                         int view_base, int count);
+
+    // The unnormalised weight of a sample created at DEPTH (eq. 5/6), or 1.
+    float sampleWeight(const LightQuadtree& tree, int depth) const;
+
+    bool error_metric_;
+    double target_error_;
+    double epsilon_;
+    bool screen_metric_;
+    double tile_epsilon_;
+    bool light_centre_;
+    int max_depth_;
+    int max_maps_;
+    LightQuadtree::Weighting weighting_;
+    bool accumulate_path_;
+    Subdivision subdivision_;
+    bool jitter_;
+    unsigned seed_;
+    SamplingSettings settings_;
+    CompareSettings compare_;
+    std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
+    std::unique_ptr<passes::ShadowAccumulate> accumulate_;
+    std::unique_ptr<MapCompare> map_compare_;
+    std::unique_ptr<passes::GBuffer> light_view_;  // receivers seen from the light's centre
+    passes::SampleViewBuffer views_buffer_;
+    std::vector<passes::SampleView> views_;
+};
+
+}  // namespace penumbra::techniques::adaptive

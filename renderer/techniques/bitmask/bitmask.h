@@ -1,0 +1,142 @@
+// The `bitmask` technique's class, shared by its files: bitmask.cpp (parameters, validation,
+// resources, the order of passes) and pixel_passes.cpp (the per-pixel classify, level
+// smoothing and visibility passes over the search areas, and the statistics).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/passes/light_windows.h"
+#include "renderer/techniques/bitmask/budget_map.h"
+#include "renderer/techniques/bitmask/depth_ranges.h"
+#include "renderer/techniques/bitmask/loq_targets.h"
+#include "renderer/techniques/bitmask/microrects.h"
+#include "renderer/techniques/bitmask/sample_pattern.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::techniques::bitmask {
+
+enum class Occluders { Micropatch, Microquad, Microrect };
+enum class Visibility { Bitmask, Area };
+
+// ACCEL in the shaders is the enum's index: 0 hsm, 1 mssm, 2 ysm (bitmask/search.glsl).
+inline constexpr EnumKey<Accel, 3> kAccel{"accel", {"hsm", "mssm", "ysm"}};
+inline constexpr EnumKey<Occluders, 3> kOccluders{"occluders",
+                                                  {"micropatch", "microquad", "microrect"}};
+inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "area"}};
+
+inline constexpr std::array kBitmaskParams = {
+    intParam("map_size", 1024, 16, 4096, "light depth map width and height (a power of two)")
+        .uniform()
+        .limitedBy(GlLimit::MaxTextureSize),
+    enumParam(kAccel, Accel::Ysm,
+              "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid")
+        .define(),
+    intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
+    enumParam(kOccluders, Occluders::Microrect,
+              "micro-occluders: microrects merged per level (5.2), texels, or quads between "
+              "texel centres (bitmask only)"),
+    enumParam(kVisibility, Visibility::Bitmask,
+              "occlusion bitmask of light samples, or summed back-projected area"),
+    intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
+    enumParam(kPattern, Pattern::Jittered, "light sample pattern"),
+    intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
+    boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)")
+        .define(),
+    intParam("budget", 12, 0, 64,
+             "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
+             "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
+             "also back-projects the finer floor level")
+        .uniform(),
+    boolParam("budget_falloff", false,
+              "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners")
+        .uniform(),
+    intParam("budget_edge", 5, 2, 64,
+             "b_mo at the image corners with budget_falloff, where budget_map is 0")
+        .uniform(),
+    stringParam("budget_map", "",
+                "budget map image (.png or .exr, relative to the scene file): its first channel "
+                "v in [0, 1], stretched over the image, sets b_mo = budget_edge + v (budget - "
+                "budget_edge)"),
+    boolParam("smooth", true,
+              "bilateral-filter the fractional level and blend floor/ceiling levels (4.2)"),
+    intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels")
+        .uniform("u_radius"),
+    floatParam("depth_tolerance", 0.03, 0.0, 1.0,
+               "relative view-depth step where the filter stops (a depth discontinuity)")
+        .uniform(),
+    intParam("refine_steps", 4, 0, 16, "search-area refinements with the area's depth range")
+        .uniform(),
+    boolParam("grow_query", true,
+              "grow depth-range queries to the budget level's texels (section 6, Fig. 7)")
+        .uniform(),
+    floatParam("normal_offset", 1.5, 0.0, 16.0,
+               "receiver offset along its normal, in light-map texels (against acne)")
+        .uniform(),
+    floatParam("depth_bias", 0.003, 0.0, 0.5,
+               "a micro-occluder shadows a receiver only when nearer by this fraction of its "
+               "depth")
+        .uniform(),
+};
+
+class Bitmask final : public Technique {
+public:
+    explicit Bitmask(const Params& p);
+
+    void readInputs(const scene::Scene& scene) override;
+    void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override;
+    void render(frame::FrameContext& ctx) override;
+
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        using C = DiagnosticChannel::Combine;
+        return {{"level", C::Max}, {"budget", C::Max}, {"occluders", C::Sum}, {"class", C::Max}};
+    }
+
+private:
+    // The uniforms and textures of search.glsl.
+    void bindSearch(const frame::FrameContext& ctx, const gl::Program& p,
+                    const scene::RectLight& light, const passes::LightWindow& window);
+
+    void classify(frame::FrameContext& ctx, const scene::RectLight& light,
+                  const passes::LightWindow& window, bool shadowed);
+
+    // The separable bilateral filter: horizontal into the spare LOQ map, vertical back.
+    void smoothLoq(frame::FrameContext& ctx);
+
+    void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
+                    const passes::LightWindow& window);
+
+    // Table 2 of the paper: share of pixels that back-project, mean and standard deviation of
+    // the micro-occluders each of them back-projects (sums kept over lights).
+    void addStatistics(frame::FrameContext& ctx, int width, int height);
+
+    Params params_;
+    int map_size_;
+    Accel accel_;
+    int ysm_size_;
+    bool microrects_, microquads_;
+    bool use_bitmask_;
+    int bits_;
+    Pattern pattern_;
+    std::uint32_t seed_;
+    int budget_;
+    std::string budget_map_file_;
+    std::optional<BudgetMap> budget_map_;  // read by readInputs()
+    bool smooth_;
+    std::unique_ptr<DepthRanges> ranges_;
+    std::unique_ptr<LoqTargets> targets_;
+    std::unique_ptr<MicroRects> rects_;
+    gl::Texture receives_, masks_, samples_, edges_, budget_texture_;
+    gl::Program classify_, smooth_program_, visibility_;
+    gl::Buffer stats_;
+    passes::Fullscreen fullscreen_;
+};
+
+}  // namespace penumbra::techniques::bitmask

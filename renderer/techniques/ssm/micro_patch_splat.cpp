@@ -1,0 +1,109 @@
+// `ssm`'s micro-patch splat: the receivers' farthest-depth pyramids, the GPU compaction of the
+// occluder map's texels into a micro-patch list, and the splat of every micro-patch's penumbra
+// quad into the soft shadow map of each receiver layer (section 3; see ssm.h).
+#include "glsl/techniques/ssm/bindings.glsl"
+#include "renderer/gl/param_uniforms.h"
+#include "renderer/techniques/ssm/ssm.h"
+
+#include <algorithm>
+
+namespace penumbra::techniques::ssm {
+
+// The farthest-receiver pyramid of each used receiver layer (receiver_max.comp), level by
+// level: a splat quad into layer k is culled where layer k has no receiver under it.
+void Ssm::buildReceiverMax() {
+    glUseProgram(max_program_.id());
+    glBindTextureUnit(SSM_UNIT_RECEIVER_MAX_SOURCE, receiver_max_.id());
+    glBindTextureUnit(SSM_UNIT_RECEIVER_MAX_LAYERS, receiver_layers_->depth.id());
+    for (int layer = 0; layer < used_layers_; ++layer) {
+        gl::setUniform(max_program_, "u_layer", layer);
+        for (int level = 0; level < receiver_levels_; ++level) {
+            const int size = std::max(ssm_size_ >> level, 1);
+            glBindImageTexture(SSM_IMAGE_RECEIVER_MAX_TARGET, receiver_max_.id(), level, GL_FALSE,
+                               layer, GL_WRITE_ONLY, GL_R32F);
+            gl::setUniform(max_program_, "u_from_depth", level == 0 ? 1 : 0);
+            gl::setUniform(max_program_, "u_source_level", level - 1);
+            const GLuint groups = static_cast<GLuint>((size + 7) / 8);
+            glDispatchCompute(groups, groups, 1);
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+    }
+    glUseProgram(0);
+}
+
+// Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
+// makes their count the splat's instance count (no readback).
+void Ssm::compact(const LightWindow& occ, int side) {
+    const DrawCommand reset{4, 0, 0, 0};
+    glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
+    glUseProgram(compact_program_.id());
+    glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, occluder_maps_[size_t(side)]->depth.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
+                     gpu_patches_[size_t(side)].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
+    gl::setUniform(compact_program_, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(compact_program_, "u_occ_near", occ.near);
+    gl::setUniform(compact_program_, "u_occ_range", occ.far - occ.near);
+    const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+// Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
+void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
+                int side) {
+    const SoftShadowTarget& target = *soft_maps_[size_t(side)];
+    const float zero[4] = {0, 0, 0, 0};
+    for (const auto& fbo : target.fbos) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+    glViewport(0, 0, ssm_size_, ssm_size_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    const auto& p = splat_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER, receiver_layers_->depth.id());
+    if (clip_) glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER_MAX, receiver_max_.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
+    gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
+    gl::setUniform(p, "u_light_half", 0.5f * light.size);
+    gl::setUniform(p, "u_ssm_lo", soft.lo);
+    gl::setUniform(p, "u_ssm_size", soft.size);
+    gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
+    gl::setUniform(p, "u_receiver_far", soft.far);
+    gl::setUniform(p, "u_receiver_near", soft.near);
+    gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
+    gl::setParamUniforms(p, kSsmParams, params_);  // ssm_size, depth_bias, map_size
+    gl::setUniform(p, "u_occ_lo", occ.lo);
+    gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
+    glBindVertexArray(empty_vao_.id());
+    if (!cpu_path_)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
+                         gpu_patches_[size_t(side)].id());
+    // The same micro-patches into each receiver layer's soft shadow map (layered SSM).
+    for (int layer = 0; layer < used_layers_; ++layer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
+        gl::setUniform(p, "u_layer", layer);
+        if (cpu_path_) {
+            // patches_buffer_ is bound at SSM_BINDING_PATCHES by the readback pass.
+            if (!patches_.empty())
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
+        } else {
+            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+            glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        }
+    }
+    glBindVertexArray(0);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glDisable(GL_BLEND);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace penumbra::techniques::ssm

@@ -1,0 +1,136 @@
+// The `ssm` technique's class, shared by its files: ssm.cpp (parameters, resources, the order
+// of passes), micro_patch_splat.cpp (occluder micro-patches into soft shadow maps) and
+// soft_shadow_lookup.cpp (the receivers' lookup into them).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "renderer/gl/dynamic_buffer.h"
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/passes/light_depth.h"
+#include "renderer/passes/light_windows.h"
+#include "renderer/techniques/ssm/micro_patches.h"
+#include "renderer/techniques/ssm/targets.h"
+#include "renderer/techniques/technique.h"
+
+namespace penumbra::techniques::ssm {
+
+using passes::LightWindow;
+
+enum class Precision { Fp32, Fp16 };
+enum class PatchPath { Gpu, Cpu };
+inline constexpr EnumKey<Precision, 2> kPrecision{"precision", {"fp32", "fp16"}};
+inline constexpr EnumKey<PatchPath, 2> kPath{"path", {"gpu", "cpu"}};
+
+inline constexpr std::array kSsmParams = {
+    intParam("map_size", 256, 16, 4096, "occluder map width and height in texels")
+        .uniform()
+        .limitedBy(GlLimit::MaxTextureSize),
+    intParam("ssm_size", 256, 16, 4096, "soft shadow map (and receiver map) width and height")
+        .uniform("u_ssm_res"),
+    enumParam(kPrecision, Precision::Fp32,
+              "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
+    boolParam("two_sided", false,
+              "also splat the farthest (back) occluder surfaces into a second map, merged by max")
+        .define(),
+    enumParam(kPath, PatchPath::Gpu,
+              "gpu: micro-patch list compacted on the GPU, drawn indirect; cpu: read back (4.1)"),
+    boolParam("clip", true,
+              "fit each penumbra quad to the farthest receiver under it, and cull it when none")
+        .define(),
+    floatParam("depth_bias", 0.002, 0.0, 0.5,
+               "a micro-patch shadows a receiver only when nearer by this fraction of its depth")
+        .uniform(),
+    intParam("layers", 4, 1, 8,
+             "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
+             "the paper: objects of role both occlude only and the receivers are the "
+             "role-receiver objects"),
+};
+
+// glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches.
+struct DrawCommand {
+    std::uint32_t vertices, instances, first, base_instance;
+};
+
+class Ssm final : public Technique {
+public:
+    explicit Ssm(const Params& p)
+        : params_(p),
+          map_size_(p.getInt("map_size")),
+          ssm_size_(p.getInt("ssm_size")),
+          fp16_(p.getEnum(kPrecision) == Precision::Fp16),
+          two_sided_(p.getBool("two_sided")),
+          cpu_path_(p.getEnum(kPath) == PatchPath::Cpu),
+          clip_(p.getBool("clip")),
+          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))),
+          layers_(p.getInt("layers")) {}
+
+    // The receivers: with one layer (the paper) the role-receiver objects only.
+    bool receives(scene::ShadowRole role) const {
+        return layers_ == 1 ? role == scene::ShadowRole::Receiver : scene::receivesShadow(role);
+    }
+    passes::GpuScene::Filter receiverFilter() const {
+        return layers_ == 1 ? passes::GpuScene::Filter::ReceiversOnly
+                            : passes::GpuScene::Filter::Receivers;
+    }
+
+    void prepare(const gl::ContextInfo&, const passes::GpuScene& scene) override;
+    void render(frame::FrameContext& ctx) override;
+    std::vector<DiagnosticChannel> diagnostics() const override {
+        return {{"occlusion", DiagnosticChannel::Combine::Max},
+                {"layer", DiagnosticChannel::Combine::Max}};
+    }
+
+private:
+    void prepareReceivers(const passes::GpuScene& scene);
+    // The light depth view through window W: linear depth over its range.
+    static passes::LightDepthView depthView(const scene::RectLight& light, const LightWindow& w) {
+        return {w.viewProj(light), w.near, 1.0f / (w.far - w.near)};
+    }
+
+    // The farthest-receiver pyramid of each used receiver layer (receiver_max.comp), level by
+    // level: a splat quad into layer k is culled where layer k has no receiver under it.
+    void buildReceiverMax();
+
+    // Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
+    // makes their count the splat's instance count (no readback).
+    void compact(const LightWindow& occ, int side);
+
+    // Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
+    void splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
+               int side);
+
+    // Projects the soft shadow map(s) onto the receivers: visibility and the occlusion channel.
+    void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
+                    const LightWindow& soft, bool shadowed);
+
+    Params params_;
+    int map_size_, ssm_size_;
+    bool fp16_, two_sided_, cpu_path_, clip_;
+    float depth_bias_;  // also the peeling's gap (host)
+    int layers_;
+    int used_layers_ = 0;  // receiver layers holding a receiver this frame
+    std::unique_ptr<passes::LightDepthPass> depth_pass_, peel_pass_;
+    gl::Program splat_program_, visibility_program_, max_program_, compact_program_;
+    gl::Texture receiver_max_;
+    int receiver_levels_ = 1;
+    std::vector<std::unique_ptr<passes::LightDepthTarget>> occluder_maps_;
+    std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
+    std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
+    gl::Texture receives_;
+    gl::Buffer counters_;
+    gl::Buffer command_;                   // path=gpu: the splat's indirect draw
+    std::vector<gl::Buffer> gpu_patches_;  // path=gpu: the micro-patch list of each side
+    gl::VertexArray empty_vao_;
+    gl::DynamicBuffer patches_buffer_{"ssm micro-patches"};
+    std::vector<float> scratch_;
+    std::vector<ssm::MicroPatch> patches_;
+    passes::Fullscreen fullscreen_;
+};
+
+}  // namespace penumbra::techniques::ssm
