@@ -1,6 +1,8 @@
 // Nesting limits and short quotations for untrusted JSON: see json_bounds.h.
 #include "renderer/core/json_bounds.h"
 
+#include <cmath>
+
 #include "renderer/core/error.h"
 
 namespace penumbra {
@@ -41,6 +43,9 @@ void appendBounded(const nlohmann::json& value, std::string& out) {
         out += '}';
     } else if (value.is_string()) {
         out += jsonString(value.get_ref<const std::string&>());
+    } else if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+        const double v = value.get<double>();
+        out += std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf";  // dump() would say null
     } else {
         out += value.dump();
     }

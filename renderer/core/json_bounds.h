@@ -27,7 +27,8 @@ std::optional<nlohmann::json> parseJsonBounded(std::string_view text, const std:
 // At most 80 characters of TEXT, "..." marking a cut, for quoting input in a message.
 std::string quoteText(std::string_view text);
 
-// VALUE as compact JSON, cut at 80 characters; never serializes more than that.
+// VALUE as compact JSON (infinities as inf, -inf), cut at 80 characters; never serializes more
+// than that.
 std::string quoteJson(const nlohmann::json& value);
 
 }  // namespace penumbra

@@ -7,30 +7,9 @@
 
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
-#include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 
 namespace penumbra {
-namespace {
-
-bool choiceAllowed(std::span<const std::string_view> choices, std::string_view value) {
-    for (std::string_view c : choices)
-        if (c == value) return true;
-    return false;
-}
-
-std::string choiceList(std::span<const std::string_view> choices) {
-    std::string out;
-    for (std::string_view c : choices) out += (out.empty() ? "" : ", ") + std::string(c);
-    return out;
-}
-
-std::string number(double v) {
-    nlohmann::json j = v;
-    if (v == std::floor(v) && std::fabs(v) < 1e15) j = static_cast<long long>(v);
-    return j.dump();
-}
-
-}  // namespace
 
 std::string_view paramTypeName(ParamType type) {
     switch (type) {
@@ -135,7 +114,7 @@ std::string Params::getString(std::string_view key) const {
 Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& block,
                      std::string_view where) {
     const std::string prefix = std::string(where) + ".";
-    if (!block.is_object()) throw InputError(std::string(where) + ": expected an object");
+    if (!block.is_object()) failExpected("", std::string(where), "an object", block);
     for (const auto& [key, value] : block.items()) {
         if (key == "name") continue;
         bool known = false;
@@ -157,49 +136,31 @@ Params resolveParams(std::span<const ParamSpec> specs, const nlohmann::json& blo
         }
     }
     nlohmann::json out = nlohmann::json::object();
+    const std::string no_file;
+    const Field root(&block, std::string(where), no_file);
     for (const auto& s : specs) {
         const std::string key(s.key);
-        auto it = block.find(key);
-        if (it == block.end()) {
+        const Field v = root.member(key);
+        if (!v.present()) {
             out[key] = paramDefault(s);
             continue;
         }
-        const nlohmann::json& v = *it;
-        const std::string at = prefix + key + ": ";
         switch (s.type) {
-            case ParamType::Int: {
-                double d = v.is_number() ? v.get<double>() : NAN;
-                if (!v.is_number() || d != std::floor(d))
-                    throw InputError(at + "expected a whole number, got " + quoteJson(v));
-                if (d < s.min || d > s.max)
-                    throw InputError(at + quoteJson(v) + " is out of range [" + number(s.min) +
-                                     ", " + number(s.max) + "]");
-                out[key] = static_cast<long long>(d);
+            case ParamType::Int:
+                out[key] = static_cast<long long>(
+                    v.integer(static_cast<long>(s.min), static_cast<long>(s.max)));
                 break;
-            }
-            case ParamType::Float: {
-                if (!v.is_number()) throw InputError(at + "expected a number, got " + quoteJson(v));
-                double d = v.get<double>();
-                if (!std::isfinite(d) || d < s.min || d > s.max)
-                    throw InputError(at + quoteJson(v) + " is out of range [" + number(s.min) +
-                                     ", " + number(s.max) + "]");
-                out[key] = d;
+            case ParamType::Float:
+                out[key] = v.number(s.min, s.max);
                 break;
-            }
             case ParamType::Bool:
-                if (!v.is_boolean())
-                    throw InputError(at + "expected true or false, got " + quoteJson(v));
-                out[key] = v.get<bool>();
+                out[key] = v.boolean();
                 break;
             case ParamType::Enum:
-                if (!v.is_string() || !choiceAllowed(s.choices, v.get<std::string>()))
-                    throw InputError(at + "expected one of " + choiceList(s.choices) + ", got " +
-                                     quoteJson(v));
-                out[key] = v.get<std::string>();
+                out[key] = v.choice(s.choices);
                 break;
             case ParamType::String:
-                if (!v.is_string()) throw InputError(at + "expected a string, got " + quoteJson(v));
-                out[key] = v.get<std::string>();
+                out[key] = v.string();
                 break;
         }
     }

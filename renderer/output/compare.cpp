@@ -7,75 +7,13 @@
 #include <cstdint>
 #include <limits>
 
-#include "renderer/core/did_you_mean.h"
+#include "renderer/output/compare_select.h"
 
 namespace penumbra::output {
 
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-struct ChannelPair {
-    const ImageChannel* ref;
-    const ImageChannel* test;
-};
-
-std::string sizeText(const Image& image) {
-    return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
-
-// The channels to compare, in order; throws CompareMismatch.
-std::vector<ChannelPair> selectChannels(const Image& ref, const Image& test,
-                                        const CompareOptions& options) {
-    using Side = CompareMismatch::Side;
-    if (ref.width != test.width || ref.height != test.height)
-        throw CompareMismatch(Side::Both, "size mismatch: reference is " + sizeText(ref) +
-                                              ", test is " + sizeText(test));
-    std::vector<std::string> names = options.channels;
-    if (names.empty())
-        for (const auto& c : ref.channels) names.push_back(c.name);
-    std::vector<ChannelPair> pairs;
-    for (const auto& name : names) {
-        const ImageChannel* r = ref.find(name);
-        const ImageChannel* t = test.find(name);
-        if (!r) {
-            std::vector<std::string> known;
-            for (const auto& c : ref.channels) known.push_back(c.name);
-            throw CompareMismatch(Side::Reference, "reference has no channel '" + name + "'" +
-                                                       didYouMean(name, known));
-        }
-        if (!t) throw CompareMismatch(Side::Test, "test image has no channel '" + name + "'");
-        pairs.push_back({r, t});
-    }
-    return pairs;
-}
-
-// 1 for each pixel that options.ids selects (all without ids); throws CompareMismatch when
-// ids are given and REF has no `id` channel or none of its pixels has a listed id.
-std::vector<uint8_t> selectPixels(const Image& ref, const CompareOptions& options, size_t pixels) {
-    if (options.ids.empty()) return std::vector<uint8_t>(pixels, 1);
-    const ImageChannel* id = ref.find("id");
-    if (!id)
-        throw CompareMismatch(CompareMismatch::Side::Reference,
-                              "reference has no channel 'id' (needed by --ids)");
-    std::vector<uint8_t> mask(pixels, 0);
-    for (size_t i = 0; i < pixels; ++i) {
-        const float v = id->pixels[i];
-        if (!std::isfinite(v)) continue;
-        mask[i] =
-            std::find(options.ids.begin(), options.ids.end(), std::lround(v)) != options.ids.end();
-    }
-    if (std::find(mask.begin(), mask.end(), uint8_t{1}) == mask.end()) {
-        std::string message = "--ids ";
-        for (size_t i = 0; i < options.ids.size(); ++i) {
-            if (i > 0) message += ',';
-            message += std::to_string(options.ids[i]);
-        }
-        message += " selects no pixel (no pixel has such an id)";
-        throw CompareMismatch(CompareMismatch::Side::Reference, message);
-    }
-    return mask;
-}
 
 // |a - b|: 0 for equal values, equal infinities included (the background's Z = +inf), else
 // infinite when either is NaN or inf.
@@ -94,15 +32,6 @@ double percentile99(std::vector<float>::iterator first, std::vector<float>::iter
     auto nth = first + static_cast<std::ptrdiff_t>(rank - 1);
     std::nth_element(first, nth, last);
     return *nth;
-}
-
-nlohmann::json number(double value) {
-    return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
-template <typename T>
-nlohmann::json optionalJson(const std::optional<T>& value) {
-    return value ? number(static_cast<double>(*value)) : nlohmann::json(nullptr);
 }
 
 void shadowRegion(const Image& ref, const Image& test, const std::vector<uint8_t>& mask,
@@ -125,19 +54,84 @@ void shadowRegion(const Image& ref, const Image& test, const std::vector<uint8_t
     if (count > 0) result.shadow_mae = sum / static_cast<double>(count);
 }
 
-}  // namespace
+enum : uint8_t { kFailed = 1, kWarned = 2 };
 
-const char* verdictName(Verdict verdict) {
-    switch (verdict) {
-        case Verdict::Pass:
-            return "pass";
-        case Verdict::Warn:
-            return "warn";
-        case Verdict::Fail:
-            return "fail";
+// What the channels of one comparison add up: per-pixel fail/warn flags, and the finite
+// differences (one contiguous block per channel) with their sum and sum of squares.
+struct Totals {
+    std::vector<uint8_t> flags;
+    std::vector<float> finite;
+    double sum = 0, sum_squares = 0;
+};
+
+// PAIR's metrics over the pixels MASK selects; flags its failing and warning pixels and adds its
+// finite differences to TOTALS.
+ChannelMetrics channelMetrics(const ChannelPair& pair, const std::vector<uint8_t>& mask,
+                              size_t width, const CompareOptions& options, Totals& totals) {
+    ChannelMetrics m;
+    m.name = pair.ref->name;
+    const size_t block_start = totals.finite.size();
+    double channelSum = 0, channelSquares = 0;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (!mask[i]) continue;
+        const double d = absoluteDifference(pair.ref->pixels[i], pair.test->pixels[i]);
+        if (d > options.fail) totals.flags[i] |= kFailed;
+        if (d > options.warn) totals.flags[i] |= kWarned;
+        if (d > m.max) {
+            m.max = d;
+            m.max_x = static_cast<int>(i % width);
+            m.max_y = static_cast<int>(i / width);
+        }
+        if (std::isinf(d)) {
+            ++m.nonfinite;
+            continue;
+        }
+        channelSum += d;
+        channelSquares += d * d;
+        totals.finite.push_back(static_cast<float>(d));
     }
-    return "fail";
+    const size_t n = totals.finite.size() - block_start;
+    if (n > 0) {
+        m.mae = channelSum / static_cast<double>(n);
+        m.rmse = std::sqrt(channelSquares / static_cast<double>(n));
+    }
+    m.p99 = percentile99(totals.finite.begin() + static_cast<std::ptrdiff_t>(block_start),
+                         totals.finite.end());
+    totals.sum += channelSum;
+    totals.sum_squares += channelSquares;
+    return m;
 }
+
+// The whole image's error, pixel counts and fractions from TOTALS.
+void addTotals(Totals& totals, CompareResult& result) {
+    if (!totals.finite.empty()) {
+        result.mae = totals.sum / static_cast<double>(totals.finite.size());
+        result.rmse = std::sqrt(totals.sum_squares / static_cast<double>(totals.finite.size()));
+    }
+    result.p99 = percentile99(totals.finite.begin(), totals.finite.end());
+    for (uint8_t f : totals.flags) {
+        result.fail_pixels += (f & kFailed) ? 1 : 0;
+        result.warn_pixels += (f & kWarned) ? 1 : 0;
+    }
+    if (result.pixels > 0) {
+        const double n = static_cast<double>(result.pixels);
+        result.fail_fraction = static_cast<double>(result.fail_pixels) / n;
+        result.warn_fraction = static_cast<double>(result.warn_pixels) / n;
+    }
+}
+
+// idiff's rule: more failing pixels than allowed, or any difference above hardfail.
+Verdict judge(const CompareResult& result, const CompareOptions& options) {
+    const double n = static_cast<double>(result.pixels);
+    if (static_cast<double>(result.fail_pixels) > options.fail_percent / 100.0 * n ||
+        (options.hard_fail && result.max > *options.hard_fail))
+        return Verdict::Fail;
+    if (static_cast<double>(result.warn_pixels) > options.warn_percent / 100.0 * n)
+        return Verdict::Warn;
+    return Verdict::Pass;
+}
+
+}  // namespace
 
 CompareResult compareImages(const Image& ref, const Image& test, const CompareOptions& options) {
     const std::vector<ChannelPair> pairs = selectChannels(ref, test, options);
@@ -150,46 +144,12 @@ CompareResult compareImages(const Image& ref, const Image& test, const CompareOp
     const std::vector<uint8_t> mask = selectPixels(ref, options, pixels);
     result.pixels = std::count(mask.begin(), mask.end(), uint8_t(1));
 
-    enum : uint8_t { kFailed = 1, kWarned = 2 };
-    std::vector<uint8_t> flags(pixels, 0);
-    std::vector<float> finite;  // finite differences, one contiguous block per channel
-    finite.reserve(pixels * pairs.size());
-    std::vector<size_t> blockStart;
-    double sum = 0, sumSquares = 0;
-
+    Totals totals;
+    totals.flags.assign(pixels, 0);
+    totals.finite.reserve(pixels * pairs.size());
     for (const auto& pair : pairs) {
-        ChannelMetrics m;
-        m.name = pair.ref->name;
+        ChannelMetrics m = channelMetrics(pair, mask, width, options, totals);
         result.channels.push_back(m.name);
-        blockStart.push_back(finite.size());
-        double channelSum = 0, channelSquares = 0;
-        for (size_t i = 0; i < pixels; ++i) {
-            if (!mask[i]) continue;
-            const double d = absoluteDifference(pair.ref->pixels[i], pair.test->pixels[i]);
-            if (d > options.fail) flags[i] |= kFailed;
-            if (d > options.warn) flags[i] |= kWarned;
-            if (d > m.max) {
-                m.max = d;
-                m.max_x = static_cast<int>(i % width);
-                m.max_y = static_cast<int>(i / width);
-            }
-            if (std::isinf(d)) {
-                ++m.nonfinite;
-                continue;
-            }
-            channelSum += d;
-            channelSquares += d * d;
-            finite.push_back(static_cast<float>(d));
-        }
-        const size_t n = finite.size() - blockStart.back();
-        if (n > 0) {
-            m.mae = channelSum / static_cast<double>(n);
-            m.rmse = std::sqrt(channelSquares / static_cast<double>(n));
-        }
-        m.p99 = percentile99(finite.begin() + static_cast<std::ptrdiff_t>(blockStart.back()),
-                             finite.end());
-        sum += channelSum;
-        sumSquares += channelSquares;
         result.nonfinite += m.nonfinite;
         if (result.per_channel.empty() || m.max > result.max) {
             result.max = m.max;
@@ -199,31 +159,9 @@ CompareResult compareImages(const Image& ref, const Image& test, const CompareOp
         }
         result.per_channel.push_back(std::move(m));
     }
-
-    if (!finite.empty()) {
-        result.mae = sum / static_cast<double>(finite.size());
-        result.rmse = std::sqrt(sumSquares / static_cast<double>(finite.size()));
-    }
-    result.p99 = percentile99(finite.begin(), finite.end());
-    for (uint8_t f : flags) {
-        result.fail_pixels += (f & kFailed) ? 1 : 0;
-        result.warn_pixels += (f & kWarned) ? 1 : 0;
-    }
-    const double n = static_cast<double>(result.pixels);
-    if (result.pixels > 0) {
-        result.fail_fraction = static_cast<double>(result.fail_pixels) / n;
-        result.warn_fraction = static_cast<double>(result.warn_pixels) / n;
-    }
+    addTotals(totals, result);
     shadowRegion(ref, test, mask, result);
-
-    // idiff's rule: more failing pixels than allowed, or any difference above hardfail.
-    if (static_cast<double>(result.fail_pixels) > options.fail_percent / 100.0 * n ||
-        (options.hard_fail && result.max > *options.hard_fail))
-        result.verdict = Verdict::Fail;
-    else if (static_cast<double>(result.warn_pixels) > options.warn_percent / 100.0 * n)
-        result.verdict = Verdict::Warn;
-    else
-        result.verdict = Verdict::Pass;
+    result.verdict = judge(result, options);
     return result;
 }
 
@@ -243,47 +181,6 @@ Image differenceImage(const Image& ref, const Image& test, const CompareOptions&
                                   : 0.0f;
     }
     return diff;
-}
-
-nlohmann::json CompareResult::toJson() const {
-    nlohmann::json perChannel = nlohmann::json::array();
-    for (const auto& m : per_channel)
-        perChannel.push_back({{"name", m.name},
-                              {"mae", number(m.mae)},
-                              {"rmse", number(m.rmse)},
-                              {"max", number(m.max)},
-                              {"max_x", m.max_x},
-                              {"max_y", m.max_y},
-                              {"p99", number(m.p99)},
-                              {"nonfinite", m.nonfinite}});
-    return {
-        {"verdict", verdictName(verdict)},
-        {"width", width},
-        {"height", height},
-        {"pixels", pixels},
-        {"channels", channels},
-        {"mae", number(mae)},
-        {"rmse", number(rmse)},
-        {"max", number(max)},
-        {"max_x", max_x},
-        {"max_y", max_y},
-        {"max_channel", max_channel},
-        {"p99", number(p99)},
-        {"nonfinite", nonfinite},
-        {"fail_pixels", fail_pixels},
-        {"fail_fraction", fail_fraction},
-        {"warn_pixels", warn_pixels},
-        {"warn_fraction", warn_fraction},
-        {"shadow_mae", optionalJson(shadow_mae)},
-        {"shadow_pixels", shadow_pixels ? nlohmann::json(*shadow_pixels) : nlohmann::json()},
-        {"thresholds",
-         {{"fail", options.fail},
-          {"fail_percent", options.fail_percent},
-          {"warn", options.warn},
-          {"warn_percent", options.warn_percent},
-          {"hard_fail", optionalJson(options.hard_fail)}}},
-        {"per_channel", perChannel},
-    };
 }
 
 }  // namespace penumbra::output

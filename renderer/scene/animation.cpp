@@ -7,8 +7,8 @@
 
 #include "renderer/core/frame_spec.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 #include "renderer/scene/dotted_key.h"
-#include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
 namespace {
@@ -57,8 +57,7 @@ AnimationTrack parseTrack(const Field& f, const nlohmann::json& doc) {
                   std::to_string(kMaxKeys));
     for (std::size_t i = 0; i < count; ++i) {
         const Field pair = keys.element(i);
-        if (!pair.json().is_array() || pair.json().size() != 2)
-            pair.fail("expected [frame, value]");
+        if (!pair.json().is_array() || pair.json().size() != 2) pair.expected("[frame, value]");
         const int frame = static_cast<int>(pair.element(0).integer(-kMaxKeyFrame, kMaxKeyFrame));
         if (!track.frames.empty() && frame <= track.frames.back())
             pair.element(0).fail("frame " + std::to_string(frame) +
@@ -66,9 +65,7 @@ AnimationTrack parseTrack(const Field& f, const nlohmann::json& doc) {
                                  std::to_string(track.frames.back()));
         const Field value = pair.element(1);
         if (!sameShape(value, *target))
-            value.fail("expected " + shapeOf(*target) + " like " + quoteText(track.key) + ", got " +
-                       (value.isNumberArray() ? std::to_string(value.json().size()) + " numbers"
-                                              : describeType(value.json())));
+            value.expected(shapeOf(*target) + " like " + quoteText(track.key));
         if (value.json().is_number())
             (void)value.number();  // finite and float-sized
         else

@@ -1,5 +1,5 @@
 // Dotted keys: splitting "lights.0.size" into components and finding the value they address
-// inside a JSON document (numeric components index arrays).
+// inside a JSON document through nlohmann's json_pointer (see dotted_key.h).
 #include "renderer/scene/dotted_key.h"
 
 #include <charconv>
@@ -20,8 +20,14 @@ std::optional<std::vector<std::string>> splitDottedKey(std::string_view key) {
     return parts;
 }
 
+nlohmann::json::json_pointer toJsonPointer(const std::vector<std::string>& parts) {
+    nlohmann::json::json_pointer pointer;
+    for (const std::string& part : parts) pointer.push_back(part);
+    return pointer;
+}
+
 std::optional<std::size_t> arrayIndex(const std::string& component) {
-    if (component.empty()) return std::nullopt;
+    if (component.empty() || (component.size() > 1 && component[0] == '0')) return std::nullopt;
     for (char c : component)
         if (c < '0' || c > '9') return std::nullopt;
     std::size_t value = 0;
@@ -33,21 +39,14 @@ std::optional<std::size_t> arrayIndex(const std::string& component) {
 }
 
 nlohmann::json* findAt(nlohmann::json& doc, const std::vector<std::string>& parts) {
-    nlohmann::json* current = &doc;
-    for (const std::string& part : parts) {
-        if (current->is_object()) {
-            const auto it = current->find(part);
-            if (it == current->end()) return nullptr;
-            current = &*it;
-        } else if (current->is_array()) {
-            const auto index = arrayIndex(part);
-            if (!index || *index >= current->size()) return nullptr;
-            current = &(*current)[*index];
-        } else {
-            return nullptr;
-        }
+    const nlohmann::json::json_pointer pointer = toJsonPointer(parts);
+    try {
+        // contains() is false for "00", "-" and indices past the end; it throws (out_of_range
+        // 404) for an index too large for size_t, which addresses nothing either.
+        return doc.contains(pointer) ? &doc.at(pointer) : nullptr;
+    } catch (const nlohmann::json::exception&) {
+        return nullptr;
     }
-    return current;
 }
 
 const nlohmann::json* findAt(const nlohmann::json& doc, const std::vector<std::string>& parts) {

@@ -3,7 +3,8 @@
 #include "renderer/scene/gltf_accessor.h"
 
 #include <algorithm>
-#include <cstring>
+
+#include "renderer/scene/gltf_components.h"
 
 namespace penumbra::scene {
 namespace {
@@ -12,13 +13,6 @@ constexpr std::size_t kMaxAccessorElements = std::size_t{1} << 26;
 // Elements an accessor without a bufferView may declare (zeros no byte of the file holds).
 constexpr std::size_t kMaxZeroElements = std::size_t{1} << 16;
 
-constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
-constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
-constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
-
 // What an attribute needs from its accessor.
 struct Expected {
     int type;                                    // TINYGLTF_TYPE_*
@@ -26,94 +20,6 @@ struct Expected {
     bool integer_indices;                        // indices: unsigned, not normalized
     const char* description;
 };
-
-std::size_t componentSize(int type) {
-    switch (type) {
-        case kByte:
-        case kUByte:
-            return 1;
-        case kShort:
-        case kUShort:
-            return 2;
-        case kUInt:
-        case kFloat:
-            return 4;
-        default:
-            return 0;
-    }
-}
-
-const char* componentName(int type) {
-    switch (type) {
-        case kByte:
-            return "byte";
-        case kUByte:
-            return "unsigned byte";
-        case kShort:
-            return "short";
-        case kUShort:
-            return "unsigned short";
-        case kUInt:
-            return "unsigned int";
-        case kFloat:
-            return "float";
-        default:
-            return "unknown component type";
-    }
-}
-
-const char* typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return "SCALAR";
-        case TINYGLTF_TYPE_VEC2:
-            return "VEC2";
-        case TINYGLTF_TYPE_VEC3:
-            return "VEC3";
-        case TINYGLTF_TYPE_VEC4:
-            return "VEC4";
-        case TINYGLTF_TYPE_MAT2:
-            return "MAT2";
-        case TINYGLTF_TYPE_MAT3:
-            return "MAT3";
-        case TINYGLTF_TYPE_MAT4:
-            return "MAT4";
-        default:
-            return "unknown type";
-    }
-}
-
-double decode(const unsigned char* p, int type, bool normalized) {
-    switch (type) {
-        case kByte: {
-            std::int8_t v;
-            std::memcpy(&v, p, 1);
-            return normalized ? std::max(v / 127.0, -1.0) : v;
-        }
-        case kUByte:
-            return normalized ? *p / 255.0 : *p;
-        case kShort: {
-            std::int16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case kUShort: {
-            std::uint16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? v / 65535.0 : v;
-        }
-        case kUInt: {
-            std::uint32_t v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        default: {
-            float v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-    }
-}
 
 // The bytes of bufferView VIEW, checked against its buffer.
 std::pair<const unsigned char*, std::size_t> viewBytes(const GltfDocument& doc, int view,

@@ -6,10 +6,10 @@
 
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 #include "renderer/core/regular_file.h"
 #include "renderer/scene/glb_container.h"
 #include "renderer/scene/gltf_uri.h"
-#include "renderer/scene/json_field.h"
 #include "renderer/scene/json_file.h"
 
 namespace penumbra::scene {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "renderer/core/error.h"
-#include "renderer/scene/json_field.h"
+#include "renderer/core/json_field.h"
 
 namespace penumbra::scene {
 namespace {

@@ -1,107 +1,14 @@
 // Type checks on a glTF document's JSON before tinygltf reads it: the fields the loader uses must
 // have their glTF types, indices must be non-negative integers, bufferViews must fit their buffers.
-#include <climits>
 #include <string_view>
 
 #include "renderer/scene/gltf_document.h"
-#include "renderer/scene/json_field.h"
+#include "renderer/scene/gltf_schema_checker.h"
 
 namespace penumbra::scene {
 namespace {
 
 using nlohmann::json;
-
-class SchemaChecker {
-public:
-    explicit SchemaChecker(const std::string& label) : label_(label) {}
-
-    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-        failAt(label_, key, what);
-    }
-
-    // The member NAME of OBJ, or nullptr when absent.
-    static const json* find(const json& obj, std::string_view name) {
-        const auto it = obj.find(name);
-        return it == obj.end() ? nullptr : &*it;
-    }
-
-    void object(const json& v, const std::string& key) const {
-        if (!v.is_object()) fail(key, "expected an object, got " + describeType(v));
-    }
-    void string(const json& v, const std::string& key) const {
-        if (!v.is_string()) fail(key, "expected a string, got " + describeType(v));
-    }
-    void boolean(const json& v, const std::string& key) const {
-        if (!v.is_boolean()) fail(key, "expected a boolean, got " + describeType(v));
-    }
-    // A non-negative integer that fits an int (indices, offsets, lengths, counts).
-    long index(const json& v, const std::string& key, long min = 0) const {
-        if (!v.is_number_integer())
-            fail(key, "expected an integer, got " + describeType(v) +
-                          (v.is_number() ? " with a fraction" : ""));
-        const auto i = v.get<long long>();
-        if (i < min || i > INT_MAX)
-            fail(key, "must be in " + std::to_string(min) + ".." + std::to_string(INT_MAX) +
-                          ", got " + std::to_string(i));
-        return static_cast<long>(i);
-    }
-    void numbers(const json& v, const std::string& key, std::size_t count) const {
-        const std::string expected = "expected " + std::to_string(count) + " numbers";
-        if (!v.is_array() || v.size() != count) fail(key, expected);
-        for (const json& x : v)
-            if (!x.is_number()) fail(key, expected + ", found " + describeType(x));
-    }
-    // Calls FN(element, key) for each element of OBJ[NAME], which must be an array of objects.
-    template <typename Fn>
-    void eachObject(const json& obj, const std::string& key, std::string_view name, Fn fn) const {
-        const json* array = find(obj, name);
-        if (!array) return;
-        const std::string array_key = joinKey(key, name);
-        if (!array->is_array()) fail(array_key, "expected an array, got " + describeType(*array));
-        for (std::size_t i = 0; i < array->size(); ++i) {
-            const std::string element_key = joinKey(array_key, std::to_string(i));
-            object((*array)[i], element_key);
-            fn((*array)[i], element_key);
-        }
-    }
-    // Optional member checks.
-    void optIndex(const json& obj, const std::string& key, std::string_view name,
-                  long min = 0) const {
-        if (const json* v = find(obj, name)) index(*v, joinKey(key, name), min);
-    }
-    void optIndexArray(const json& obj, const std::string& key, std::string_view name) const {
-        const json* v = find(obj, name);
-        if (!v) return;
-        const std::string k = joinKey(key, name);
-        if (!v->is_array()) fail(k, "expected an array, got " + describeType(*v));
-        for (std::size_t i = 0; i < v->size(); ++i) index((*v)[i], joinKey(k, std::to_string(i)));
-    }
-    void optString(const json& obj, const std::string& key, std::string_view name) const {
-        if (const json* v = find(obj, name)) string(*v, joinKey(key, name));
-    }
-    void optObject(const json& obj, const std::string& key, std::string_view name) const {
-        if (const json* v = find(obj, name)) object(*v, joinKey(key, name));
-    }
-    void optNumbers(const json& obj, const std::string& key, std::string_view name,
-                    std::size_t count) const {
-        if (const json* v = find(obj, name)) numbers(*v, joinKey(key, name), count);
-    }
-    // An index into an array of COUNT WHATs ("accessor").
-    void reference(const json& v, const std::string& key, std::size_t count,
-                   const char* what) const {
-        const long i = index(v, key);
-        if (static_cast<std::size_t>(i) >= count)
-            fail(key, std::string(what) + " " + std::to_string(i) + " does not exist");
-    }
-    // An object whose members are all indices (primitive attributes).
-    void indexMap(const json& v, const std::string& key) const {
-        object(v, key);
-        for (const auto& item : v.items()) index(item.value(), joinKey(key, item.key()));
-    }
-
-private:
-    const std::string& label_;
-};
 
 std::size_t arrayCount(const json& doc, const char* name) {
     const json* v = SchemaChecker::find(doc, name);
@@ -249,11 +156,11 @@ void checkGltfJson(const json& doc, const std::string& label) {
     if (!version) c.fail("asset.version", "missing");
     c.string(*version, "asset.version");
     const std::string v = version->get<std::string>();
-    if (v.rfind("2.", 0) != 0)
-        c.fail("asset.version", "unsupported glTF version '" + v + "' (expected 2.x)");
+    if (v.rfind("2.", 0) != 0) c.at(*version, "asset.version").expected("glTF version 2.x");
     if (const json* required = SchemaChecker::find(doc, "extensionsRequired")) {
-        if (!required->is_array()) c.fail("extensionsRequired", "expected an array");
-        for (const json& e : *required) c.string(e, "extensionsRequired");
+        const std::size_t size = c.at(*required, "extensionsRequired").arraySize();
+        for (std::size_t i = 0; i < size; ++i)
+            c.string((*required)[i], "extensionsRequired." + std::to_string(i));
     }
     checkBuffers(c, doc);
     checkAccessors(c, doc);

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 #include "renderer/scene/gltf_document.h"
-#include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
 namespace {
@@ -25,31 +25,23 @@ public:
         const auto it = obj.find(name);
         return it == obj.end() ? nullptr : &*it;
     }
+    Field at(const json& v, const std::string& key) const { return Field(&v, key, doc_.label); }
     const json& object(const json& v, const std::string& key) const {
-        if (!v.is_object()) fail(key, "expected an object, got " + describeType(v));
+        at(v, key).expectObject();
         return v;
     }
     const json& array(const json& v, const std::string& key) const {
-        if (!v.is_array()) fail(key, "expected an array, got " + describeType(v));
+        (void)at(v, key).arraySize();
         return v;
     }
     // A finite number.
-    double number(const json& v, const std::string& key) const {
-        if (!v.is_number()) fail(key, "expected a number, got " + describeType(v));
-        const double d = v.get<double>();
-        if (!std::isfinite(d)) fail(key, "not a finite number");
-        return d;
-    }
-    std::string string(const json& v, const std::string& key) const {
-        if (!v.is_string()) fail(key, "expected a string, got " + describeType(v));
-        return v.get<std::string>();
-    }
+    double number(const json& v, const std::string& key) const { return at(v, key).number(); }
+    std::string string(const json& v, const std::string& key) const { return at(v, key).string(); }
     // An index into an array of COUNT WHATs.
     int reference(const json& v, const std::string& key, std::size_t count,
                   const char* what) const {
-        if (!v.is_number_integer()) fail(key, "expected an integer, got " + describeType(v));
-        const auto i = v.get<long long>();
-        if (i < 0 || i > INT_MAX || static_cast<std::size_t>(i) >= count)
+        const long i = at(v, key).strictInteger(0, INT_MAX);
+        if (static_cast<std::size_t>(i) >= count)
             fail(key, std::string(what) + " " + std::to_string(i) + " does not exist");
         return static_cast<int>(i);
     }
@@ -110,9 +102,9 @@ GltfPunctualLight readLight(const ViewReader& r, const json& l, const std::strin
         r.fail(key + ".type", "unknown light type '" + quoteText(light.type) +
                                   "' (allowed: point, spot, directional)");
     if (const json* color = ViewReader::find(l, "color")) {
-        if (!color->is_array() || color->size() != 3) r.fail(key + ".color", "expected 3 numbers");
+        const std::vector<double> rgb = r.at(*color, key + ".color").numbers(3);
         for (int i = 0; i < 3; ++i) {
-            light.color[i] = r.number((*color)[static_cast<std::size_t>(i)], key + ".color");
+            light.color[i] = rgb[static_cast<std::size_t>(i)];
             if (light.color[i] < 0.0) r.fail(key + ".color", "must be >= 0");
         }
     }

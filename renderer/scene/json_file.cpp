@@ -10,8 +10,8 @@
 
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 #include "renderer/core/regular_file.h"
-#include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
 namespace {

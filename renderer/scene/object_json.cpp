@@ -34,7 +34,7 @@ glm::vec4 readBaseColor(const Field& material) {
     const Field f = material.member("base_color");
     if (!f.present()) return glm::vec4(1.0f);
     const std::size_t n = f.json().is_array() ? f.json().size() : 0;
-    if (n != 3 && n != 4) f.fail("expected 3 or 4 numbers in [0, 1]");
+    if (n != 3 && n != 4) f.expected("3 or 4 numbers in [0, 1]");
     const std::vector<double> v = f.numbers(n);
     for (double c : v)
         if (c < 0.0 || c > 1.0) f.fail("components must be in [0, 1]");
@@ -138,7 +138,7 @@ glm::mat4 readTransform(const Field& object) {
         } else if (s.json().is_array() && s.json().size() == 3 && s.isNumberArray()) {
             scale = s.vec3();
         } else {
-            s.fail("expected a number or 3 numbers");
+            s.expected("a number or 3 numbers");
         }
         if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f) s.fail("must be nonzero");
     }

@@ -4,8 +4,8 @@
 
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/json_field.h"
 #include "renderer/scene/dotted_key.h"
-#include "renderer/scene/json_field.h"
 
 namespace penumbra::scene {
 namespace {

@@ -8,8 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/core/json_field.h"
 #include "renderer/scene/asset_store.h"
-#include "renderer/scene/json_field.h"
+#include "renderer/scene/gltf_loader.h"
 #include "renderer/scene/scene.h"
 
 namespace penumbra::scene {
@@ -31,6 +32,18 @@ Scene buildScene(const nlohmann::json& doc, const SceneContext& context);
 // The "objects" array, and its element INDEX (object_json.cpp).
 std::vector<Object> buildObjects(const Field& objects, const SceneContext& context);
 Object buildObject(const Field& object, std::size_t index, const SceneContext& context);
+
+// True when directions A and B are parallel (or opposite), to 1e-6.
+bool parallelDirections(const glm::vec3& a, const glm::vec3& b);
+
+// The "camera" block (camera_json.cpp); FAR_AUTO is set when a glTF camera's zfar is infinite.
+Camera readCamera(const Field& f, const SceneContext& context, bool& far_auto);
+// The world bounds of OBJECTS' vertices (for a glTF camera with an infinite zfar).
+Bounds objectBounds(const std::vector<Object>& objects);
+
+// The "lights" array and its one element (light_json.cpp): a rect light, or a glTF's lights.
+std::vector<RectLight> readLights(const Field& f, const SceneContext& context);
+std::vector<RectLight> readLight(const Field& f, const SceneContext& context);
 
 // The glTF file that FIELD (a string path) names, loaded once per scene; fails at FIELD.
 std::shared_ptr<const GltfFile> readGltfReference(const Field& field, const SceneContext& context);

@@ -6,10 +6,10 @@
 #include <set>
 
 #include "renderer/core/error.h"
+#include "renderer/core/json_field.h"
 #include "renderer/scene/animation.h"
 #include "renderer/scene/asset_store.h"
 #include "renderer/scene/dotted_key.h"
-#include "renderer/scene/json_field.h"
 #include "renderer/scene/json_file.h"
 #include "renderer/scene/overrides.h"
 #include "renderer/scene/scene_json.h"
@@ -86,7 +86,7 @@ SceneSource SceneSource::load(const std::filesystem::path& file,
                                         .dump());
     } else {
         doc = parseJsonText(readTextFile(file, label, kMaxSceneFileBytes), label);
-        if (!doc.is_object()) failAt(label, "", "expected a JSON object, got " + describeType(doc));
+        if (!doc.is_object()) failExpected(label, "", "a JSON object", doc);
     }
     applyTechniqueOption(doc, options.technique);
     applyOverrides(doc, overrides);

@@ -15,7 +15,7 @@ expect_exit 2 "^penumbra: -D technique.epslion: unknown parameter for technique 
     "${r[@]}" -t adaptive -D technique.epslion=0.01
 expect_exit 2 "^penumbra: -D techniqe.samples: unknown key 'techniqe' \(did you mean 'technique'\?" -- \
     "${r[@]}" -D techniqe.samples=3
-expect_exit 2 "^penumbra: -D technique.pcf: 0 is out of range" -- "${r[@]}" -D technique.pcf=0
+expect_exit 2 "^penumbra: -D technique.pcf: expected an integer in 1\.\.15, got 0$" -- "${r[@]}" -D technique.pcf=0
 sed 's/"fov_y"/"fov_u"/' "$scene" >typo.json
 expect_exit 2 "^penumbra: typo.json: camera: unknown key 'fov_u' \(did you mean 'fov_y'\?" -- \
     "$PENUMBRA" render typo.json

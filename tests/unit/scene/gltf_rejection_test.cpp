@@ -29,12 +29,14 @@ TEST(GltfRejection, AssimpBrokenFilesAreRejected) {
         {"MissingBin/BoxTextured.gltf",
          "buffers.0.uri: cannot read 'BoxTextured0.bin' (no such file)"},
         {"RecursiveNodes/RecursiveNodes.gltf", "nodes.1.children: cycle in the node hierarchy"},
-        {"SchemaFailures/sceneWrongType.gltf", "scene: expected an integer, got a string"},
-        {"wrongTypes/badArray.gltf", "meshes.0.primitives: expected an array, got an object"},
+        {"SchemaFailures/sceneWrongType.gltf",
+         "scene: expected an integer in 0..2147483647, got \"hello\""},
+        {"wrongTypes/badArray.gltf", "meshes.0.primitives: expected an array, got {\"indices\":0,"},
         {"wrongTypes/badObject.gltf",
-         "materials.0.pbrMetallicRoughness: expected an object, got an array"},
+         "materials.0.pbrMetallicRoughness: expected an object, got [\"not an object\"]"},
         {"wrongTypes/badUint.gltf",
-         "materials.0.pbrMetallicRoughness.baseColorTexture.index: must be in 0.."},
+         "materials.0.pbrMetallicRoughness.baseColorTexture.index: expected an integer in "
+         "0..2147483647, got -1"},
         {"TestNoRootNode/NoScene.gltf", "scene: scene 0 does not exist"},
         {"TestNoRootNode/SceneWithoutNodes.gltf", "no triangles to draw"},
     };
@@ -56,7 +58,7 @@ const std::vector<Broken>& brokenFiles() {
     static const std::vector<Broken> cases = {
         {"asset missing", [](GltfBuilder& b) { b.doc.erase("asset"); }, "asset: missing"},
         {"version 1", [](GltfBuilder& b) { b.doc["asset"]["version"] = "1.0"; },
-         "asset.version: unsupported glTF version '1.0'"},
+         "asset.version: expected glTF version 2.x, got \"1.0\""},
         {"required extension",
          [](GltfBuilder& b) { b.doc["extensionsRequired"] = {"EXT_meshopt_compression"}; },
          "extensionsRequired: unsupported extension 'EXT_meshopt_compression'"},
@@ -131,7 +133,7 @@ const std::vector<Broken>& brokenFiles() {
          "meshes.0.primitives.0.mode: invalid primitive mode 9"},
         {"mode type",
          [](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["mode"] = "TRIANGLES"; },
-         "meshes.0.primitives.0.mode: expected an integer, got a string"},
+         "meshes.0.primitives.0.mode: expected an integer in 0..2147483647, got \"TRIANGLES\""},
         {"mesh missing", [](GltfBuilder& b) { b.doc["nodes"][0]["mesh"] = 5; },
          "nodes.0.mesh: mesh 5 does not exist"},
         {"child missing", [](GltfBuilder& b) { b.doc["nodes"][0]["children"] = {7}; },
@@ -170,7 +172,7 @@ const std::vector<Broken>& brokenFiles() {
          [](GltfBuilder& b) {
              b.doc["nodes"][0]["translation"] = {0, "up", 0};
          },
-         "nodes.0.translation: expected 3 numbers, found a string"},
+         "nodes.0.translation: expected 3 numbers, got [0,\"up\",0]"},
         {"material missing",
          [](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["material"] = 2; },
          "meshes.0.primitives.0.material: material 2 does not exist"},
@@ -314,7 +316,7 @@ TEST(GltfRejection, BrokenContainers) {
         {"first chunk", bad_chunk, "GLB does not start with a JSON chunk"},
         {"empty", "", "invalid JSON"},
         {"not json", "solid cube\nendsolid", "invalid JSON: "},
-        {"array", "[]", "expected an object, got an array"},
+        {"array", "[]", "expected an object, got []"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

@@ -239,7 +239,7 @@ TEST(GltfScene, RefusesBadCamerasAndLights) {
                   "cameras.0.perspective.zfar: must be greater than znear");
     expectMessage(error(quadWithCamera(
                       {{"type", "perspective"}, {"perspective", {{"yfov", "x"}, {"znear", 1}}}})),
-                  "cameras.0.perspective.yfov: expected a number, got a string");
+                  "cameras.0.perspective.yfov: expected a number, got \"x\"");
     expectMessage(error(quadWithCamera(
                       {{"type", "orthographic"},
                        {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 9}}}})),

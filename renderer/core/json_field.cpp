@@ -1,23 +1,41 @@
-// Typed, located JSON reading: the checks every scene key shares (types, finiteness, unknown
-// keys), with one message format.
-#include "renderer/scene/json_field.h"
+// The one typed-JSON checker: types, ranges, choices, finiteness and unknown keys, with one
+// message style "<file>: <key>: expected <what>, got <value>" (see json_field.h).
+#include "renderer/core/json_field.h"
 
 #include <cfloat>
 #include <cmath>
 
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 
-namespace penumbra::scene {
+namespace penumbra {
 
 namespace {
 std::string located(const std::string& file, const std::string& key, const std::string& what) {
-    return key.empty() ? file + ": " + what : file + ": " + key + ": " + what;
+    std::string out = file;
+    if (!key.empty()) out += (out.empty() ? "" : ": ") + key;
+    return out.empty() ? what : out + ": " + what;
+}
+
+std::string joinList(std::span<const std::string_view> names) {
+    std::string list;
+    for (std::string_view name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+    return list;
+}
+
+bool fitsFloat(double v) {
+    return std::isfinite(v) && std::abs(v) <= FLT_MAX;
 }
 }  // namespace
 
 void failAt(const std::string& file, const std::string& key, const std::string& what) {
     throw InputError(located(file, key, what));
+}
+
+void failExpected(const std::string& file, const std::string& key, std::string_view what,
+                  const nlohmann::json& got) {
+    failAt(file, key, "expected " + std::string(what) + ", got " + quoteJson(got));
 }
 
 UnknownKeyError::UnknownKeyError(const std::string& file, const std::string& parent,
@@ -50,23 +68,33 @@ std::string joinKey(const std::string& parent, std::string_view child) {
     return parent + "." + std::string(child);
 }
 
+std::string formatNumber(double v) {
+    nlohmann::json j = v;
+    if (v == std::floor(v) && std::fabs(v) < 1e15) j = static_cast<long long>(v);
+    return j.dump();
+}
+
+void Field::expected(std::string_view what) const {
+    if (!value_) fail("expected " + std::string(what) + ", got nothing");
+    failExpected(*file_, key_, what, *value_);
+}
+
+void Field::expectObject() const {
+    if (!value_ || !value_->is_object()) expected("an object");
+}
+
 void Field::expectObject(std::initializer_list<std::string_view> allowed) const {
-    if (!value_->is_object()) fail("expected an object, got " + describeType(*value_));
+    expectObject();
+    const std::vector<std::string_view> names(allowed);
     for (const auto& item : value_->items()) {
         bool known = false;
         for (std::string_view name : allowed) known = known || item.key() == name;
         if (known) continue;
-        std::string list;
-        for (std::string_view name : allowed) {
-            if (!list.empty()) list += ", ";
-            list += name;
-        }
-        const std::vector<std::string_view> names(allowed);
         const std::string near = nearestName(item.key(), names);
         throw UnknownKeyError(*file_, key_, item.key(),
                               "unknown key '" + item.key() + "' (" +
                                   (near.empty() ? "" : "did you mean '" + near + "'? ") +
-                                  "allowed: " + list + ")");
+                                  "allowed: " + joinList(names) + ")");
     }
 }
 
@@ -77,7 +105,7 @@ Field Field::member(std::string_view name) const {
 }
 
 std::size_t Field::arraySize() const {
-    if (!value_->is_array()) fail("expected an array, got " + describeType(*value_));
+    if (!value_ || !value_->is_array()) expected("an array");
     return value_->size();
 }
 
@@ -86,39 +114,59 @@ Field Field::element(std::size_t index) const {
 }
 
 double Field::number() const {
-    if (!value_->is_number()) fail("expected a number, got " + describeType(*value_));
+    if (!value_->is_number()) expected("a number");
     const double v = value_->get<double>();
-    if (!std::isfinite(v)) fail("expected a finite number");
-    if (std::abs(v) > FLT_MAX) fail("number too large");
+    if (!fitsFloat(v)) expected("a number within +-3.4e38");
+    return v;
+}
+
+double Field::number(double lo, double hi) const {
+    const std::string what = "a number in " + formatNumber(lo) + ".." + formatNumber(hi);
+    if (!value_->is_number()) expected(what);
+    const double v = value_->get<double>();
+    if (!std::isfinite(v) || v < lo || v > hi) expected(what);
     return v;
 }
 
 long Field::integer(long lo, long hi) const {
-    if (!value_->is_number()) fail("expected an integer, got " + describeType(*value_));
+    const std::string what = "an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
+    if (!value_->is_number()) expected(what);
     const double v = value_->get<double>();
-    if (!std::isfinite(v) || std::floor(v) != v) fail("expected an integer");
-    if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
-        fail("must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
-             value_->dump());
+    if (!std::isfinite(v) || std::floor(v) != v) expected(what);
+    if (v < static_cast<double>(lo) || v > static_cast<double>(hi)) expected(what);
     return static_cast<long>(v);
 }
 
+long Field::strictInteger(long lo, long hi) const {
+    if (!value_->is_number_integer())
+        expected("an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+    return integer(lo, hi);  // the range, with the same message
+}
+
+bool Field::boolean() const {
+    if (!value_->is_boolean()) expected("true or false");
+    return value_->get<bool>();
+}
+
 std::string Field::string() const {
-    if (!value_->is_string()) fail("expected a string, got " + describeType(*value_));
+    if (!value_->is_string()) expected("a string");
     return value_->get<std::string>();
 }
 
+std::string Field::choice(std::span<const std::string_view> choices) const {
+    if (value_->is_string())
+        for (std::string_view c : choices)
+            if (c == value_->get_ref<const std::string&>()) return std::string(c);
+    expected("one of " + joinList(choices));
+}
+
 double Field::numberAt(std::size_t index, std::size_t count) const {
-    const std::string expected = "expected " + std::to_string(count) + " numbers";
-    if (!value_->is_array()) fail(expected + ", got " + describeType(*value_));
-    if (value_->size() != count)
-        fail(expected + ", got " + std::to_string(value_->size()) + " elements");
+    const std::string what = std::to_string(count) + " numbers";
+    if (!value_->is_array() || value_->size() != count) expected(what);
     const nlohmann::json& v = (*value_)[index];
-    if (!v.is_number())
-        fail(expected + ", element " + std::to_string(index) + " is " + describeType(v));
+    if (!v.is_number()) expected(what);
     const double d = v.get<double>();
-    if (!std::isfinite(d) || std::abs(d) > FLT_MAX)
-        fail(expected + ", element " + std::to_string(index) + " is not finite");
+    if (!fitsFloat(d)) expected(what + " within +-3.4e38");
     return d;
 }
 
@@ -144,4 +192,4 @@ bool Field::isNumberArray() const {
     return true;
 }
 
-}  // namespace penumbra::scene
+}  // namespace penumbra

@@ -1,0 +1,43 @@
+// One pixel's shadow rays for `exact`: the G-buffer, the casters and the settings they need, and
+// the two estimators (a rect light's N x N points, the environment's importance samples).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/techniques/exact/environment_sampler.h"
+#include "renderer/techniques/exact/ray_scene.h"
+
+namespace penumbra::techniques::exact {
+
+// A rect light as the rays see it: a corner, its two edges and the direction it faces.
+struct AreaLight {
+    glm::vec3 corner, edge_x, edge_y, forward;
+};
+
+struct PixelTracer {
+    const std::vector<float>& position;  // the G-buffer's RGBA positions (a = 0: background)
+    const std::vector<float>& normal;    // and normals
+    const RayScene& rays;
+    const EnvironmentSampler* environment;  // null without an environment layer
+    bool jitter;
+    std::uint32_t seed;
+    int env_samples;
+
+    // One pixel's rays: OUT gets (unblocked share, sum c lit, sum c, 1), c = cos cos / r^2 of
+    // the sample (0 below the receiver's horizon and behind the light). Returns rays cast.
+    std::uint64_t tracePixel(const AreaLight& light, int n, std::size_t pix, float tnear,
+                             std::vector<float>& out) const;
+    // The environment at one pixel: OUT gets (shadowed irradiance rgb, unshadowed luminance
+    // irradiance) from env_samples rays. Returns rays cast.
+    std::uint64_t traceEnvironment(std::size_t pix, float tnear, std::vector<float>& out) const;
+
+    glm::vec3 positionAt(std::size_t pix) const;
+    // The G-buffer normal of PIX, unit length (+y where the G-buffer holds none).
+    glm::vec3 normalAt(std::size_t pix) const;
+};
+
+}  // namespace penumbra::techniques::exact
