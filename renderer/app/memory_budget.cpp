@@ -100,8 +100,9 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view t
     const u64 pixels = product({static_cast<u64>(s.image.width), static_cast<u64>(s.image.height)});
     const u64 lights = std::max<u64>(1, s.lights.size());
     std::vector<MemoryTerm> out;
-    // G-buffer 56 (position 16 and the geometric normal 8 of it), beauty and visibility 20, per light a visibility layer
-    // 16 and diagnostics 16; the readback and the EXR image about 17 float channels each.
+    // G-buffer 56 (position 16 and the geometric normal 8 of it), beauty and visibility 20, per
+    // light a visibility layer 16 and diagnostics 16; the readback and the EXR image about 17 float
+    // channels each.
     out.push_back({"image.width", "the G-buffer position texture", product({pixels, 16}), true});
     out.push_back({"image.width", "the G-buffer and shading targets", product({pixels, 40 + 20})});
     out.push_back({"image.width", "the visibility layers", product({pixels, lights, 16}), true});

@@ -9,6 +9,6 @@ constexpr unsigned kBindingSampleViews = BINDING_SAMPLE_VIEWS;      // SSBO of S
 constexpr unsigned kBindingLights = BINDING_LIGHTS;                 // SSBO of GpuLight (shade)
 constexpr unsigned kBindingSampleLookups = BINDING_SAMPLE_LOOKUPS;  // UBO of SampleLookup
 constexpr unsigned kBindingCasterFlags = BINDING_CASTER_FLAGS;      // SSBO of int per object
-constexpr unsigned kUnitGeometricNormal = UNIT_GEOMETRIC_NORMAL;  // GBuffer::geometricNormal()
+constexpr unsigned kUnitGeometricNormal = UNIT_GEOMETRIC_NORMAL;    // GBuffer::geometricNormal()
 constexpr int kMaxSampleLookups = MAX_SAMPLE_LOOKUPS;               // views per light
 }  // namespace penumbra::passes

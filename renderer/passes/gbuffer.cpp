@@ -25,8 +25,7 @@ GBuffer::GBuffer(int width, int height)
       normal_(gl::createTexture2D(GL_RGBA32F, width, height, "gbuffer normal")),
       albedo_(gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer albedo")),
       id_(gl::createTexture2D(GL_R32I, width, height, "gbuffer id")),
-      geometric_normal_(
-          gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer geometric normal")),
+      geometric_normal_(gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer geometric normal")),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, "gbuffer depth")),
       fbo_(gl::createFramebuffer("gbuffer")),
       program_(gl::buildProgram("gbuffer", {"passes/gbuffer.vert", "passes/gbuffer.frag"})) {

@@ -17,8 +17,9 @@ struct CameraMatrices {
 
 CameraMatrices cameraMatrices(const scene::Camera& camera, int width, int height);
 
-// Clears FBO (colour 0-4: position, normal, albedo, id, geometric normal; and depth) and draws SCENE into it with
-// PROGRAM (glsl/passes/gbuffer.*) through VIEW and PROJECTION: the G-buffer passes' one draw.
+// Clears FBO (colour 0-4: position, normal, albedo, id, geometric normal; and depth) and draws
+// SCENE into it with PROGRAM (glsl/passes/gbuffer.*) through VIEW and PROJECTION: the G-buffer
+// passes' one draw.
 void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
                  const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection);
 
@@ -37,7 +38,7 @@ public:
     const gl::Texture& geometricNormal() const { return geometric_normal_; }
     // Binds geometricNormal() to its unit (common/geometric_normal.glsl) for the next draws.
     void bindGeometricNormal() const;
-    const gl::Texture& depth() const { return depth_; }        // DEPTH32F (hardware depth)
+    const gl::Texture& depth() const { return depth_; }  // DEPTH32F (hardware depth)
 
 private:
     int width_, height_;

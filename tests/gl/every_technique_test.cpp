@@ -53,7 +53,7 @@ const std::map<std::string, Bounds>& bounds() {
 }
 
 const std::vector<penumbra::scene::Override> kSize = {{"image.width", "128"},
-                                                       {"image.height", "96"}};
+                                                      {"image.height", "96"}};
 
 std::vector<penumbra::scene::Override> withTechnique(const std::string& name) {
     auto o = kSize;
