@@ -191,7 +191,7 @@ int runRenderJob(const RenderRequest& req) {
     gl::enableDebugOutput(req.gl.debug);
     gl::setStrictUniforms(req.gl.debug);  // a uniform no shader declares is a bug: fail
     checkGlLimits(in.first, in.info, in.params, glinfo);
-    checkMemoryBudget(in.first, in.info.name, in.params, &glinfo);  // exit 2 before allocating
+    checkMemoryBudget(in.first, in.info, in.params, &glinfo);  // exit 2 before allocating
 
     const Tally tally = renderFrames(req, in, glinfo);  // 3.
     if (!req.quiet && in.plans.size() > 1)

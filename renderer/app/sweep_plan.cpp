@@ -31,7 +31,7 @@ void validate(SweepRender& render, const SweepRequest& req, bool reference) {
     if (!info)
         throw InputError(req.scene.string() + ": technique.name: unknown technique '" +
                          quoteText(render.technique_name) + "'");
-    checkMemoryBudget(s, render.technique_name,
+    checkMemoryBudget(s, *info,
                       resolveParams(info->params, s.technique, req.scene.string() + ": technique"),
                       nullptr);
     std::string key =

@@ -3,6 +3,7 @@
 // renderer does that around it. Techniques live above (renderer/techniques/, its registry).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/core/memory_term.h"
 #include "renderer/core/params.h"
 #include "renderer/frame/frame_context.h"
 #include "renderer/gl/context.h"
@@ -54,6 +56,12 @@ struct TechniqueInfo {
     // The lights of a scene's environment (called only when it has one), or nullptr: the
     // technique ignores environments.
     EnvironmentLights (*environment)(const Params&, const scene::Scene&) = nullptr;
+    // The technique's largest allocations for its resolved PARAMS and an image of PIXELS (the
+    // memory budget checks them before anything is allocated), or nullptr: none that matter.
+    MemoryTerms (*memory)(const Params&, std::uint64_t pixels) = nullptr;
+    // A bound the parameter table's ranges cannot say (e.g. a product of two keys): the message
+    // "technique.<key>: ..." when PARAMS exceed it, else "". nullptr: none.
+    std::string (*limit_error)(const Params&) = nullptr;
 };
 
 }  // namespace penumbra::frame

@@ -37,8 +37,11 @@ private:
 }  // namespace
 
 const TechniqueInfo kHardTechnique = {
-    "hard", "one shadow map from the light's centre (optional PCF): the hard-shadow baseline",
+    "hard",
+    "one shadow map from the light's centre (optional PCF): the hard-shadow baseline",
     kHardParams,
-    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Hard>(p); }};
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Hard>(p); },
+    nullptr,
+    [](const Params& p, std::uint64_t) { return MemoryTerms{shadowMapArrayTerm(p, 1)}; }};
 
 }  // namespace penumbra::techniques

@@ -2,6 +2,9 @@
 #include "renderer/techniques/light_sampling.h"
 
 #include <algorithm>
+#include <cstdint>
+
+#include "renderer/core/memory_limit.h"
 
 namespace penumbra::techniques {
 
@@ -11,6 +14,16 @@ SamplingSettings samplingSettings(const Params& p) {
     s.test.normal_offset = static_cast<float>(p.getFloat("normal_offset"));
     s.test.depth_bias = static_cast<float>(p.getFloat("depth_bias"));
     return s;
+}
+
+MemoryTerm shadowMapArrayTerm(const Params& p, int layers) {
+    const int map = p.getInt("map_size");
+    const auto m = static_cast<std::uint64_t>(map);
+    std::string what = layers == 1 ? "the shadow map (" + squareText(map) + ")"
+                                   : "the shadow map array (" + squareText(map) + " x " +
+                                         std::to_string(layers) + ")";
+    return {"technique.map_size", std::move(what),
+            saturatingProduct({m, m, 4, static_cast<std::uint64_t>(layers)}), true};
 }
 
 void LightSampler::prepare(const gl::ContextInfo& gl, const SamplingSettings& settings) {

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/core/memory_term.h"
 #include "renderer/core/params.h"
 #include "renderer/frame/frame_context.h"
 #include "renderer/gl/context.h"
@@ -57,5 +58,8 @@ constexpr ParamSpec kDepthBiasParam =
 
 // Settings from the shared rows above.
 SamplingSettings samplingSettings(const Params& params);
+
+// The memory term of a LAYERS-deep array of PARAMS' map_size depth maps (32-bit).
+MemoryTerm shadowMapArrayTerm(const Params& params, int layers);
 
 }  // namespace penumbra::techniques

@@ -1,6 +1,7 @@
 // `reference`: N x N stratified, jittered samples on the light, one hard shadow map each,
 // averaged: the papers' map-based baseline (`exact` is the ground truth). Maps are rendered in
 // batches through a texture array, so memory stays bounded up to N = 32 (1024 maps).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -69,6 +70,10 @@ const TechniqueInfo kReferenceTechnique = {
     "N x N stratified jittered light samples, one shadow map each, averaged: the papers' baseline",
     kReferenceParams,
     [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); },
-    sampledEnvironmentLights};
+    sampledEnvironmentLights,
+    [](const Params& p, std::uint64_t) {
+        const int n = p.getInt("samples");
+        return MemoryTerms{shadowMapArrayTerm(p, std::min(p.getInt("batch"), n * n))};
+    }};
 
 }  // namespace penumbra::techniques

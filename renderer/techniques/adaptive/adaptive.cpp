@@ -3,9 +3,11 @@
 #include "renderer/techniques/adaptive/adaptive.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "renderer/core/error.h"
+#include "renderer/core/memory_limit.h"
 #include "renderer/passes/bindings.h"
 #include "renderer/techniques/registry_entries.h"
 
@@ -199,8 +201,21 @@ const TechniqueInfo kAdaptiveTechnique = {
     "adaptive",
     "adaptive light sampling (Schwarzler 2009): corner maps refined by a quadtree where maps "
     "disagree in the camera view",
-    adaptive::kAdaptiveParams, [](const Params& p) -> std::unique_ptr<Technique> {
+    adaptive::kAdaptiveParams,
+    [](const Params& p) -> std::unique_ptr<Technique> {
         return std::make_unique<adaptive::Adaptive>(p);
+    },
+    nullptr,
+    // The maps, the scratch batch and the light-view G-buffer (48 bytes a texel).
+    [](const Params& p, std::uint64_t) {
+        const int maps = p.getInt("max_maps");
+        const auto m = static_cast<std::uint64_t>(p.getInt("map_size"));
+        MemoryTerms out = {shadowMapArrayTerm(p, maps),
+                           shadowMapArrayTerm(p, std::min(adaptive::kScratchLayers, maps))};
+        out[1].what = "the scratch maps";
+        out.push_back(
+            {"technique.map_size", "the light-view G-buffer", saturatingProduct({m, m, 48})});
+        return out;
     }};
 
 }  // namespace penumbra::techniques

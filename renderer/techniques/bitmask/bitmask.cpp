@@ -5,9 +5,11 @@
 #include "renderer/techniques/bitmask/bitmask.h"
 #include "glsl/techniques/bitmask/bindings.glsl"
 
+#include <cstdint>
 #include <string>
 
 #include "renderer/core/error.h"
+#include "renderer/core/memory_limit.h"
 #include "renderer/gl/param_uniforms.h"
 #include "renderer/techniques/bitmask/mask_textures.h"
 #include "renderer/techniques/registry_entries.h"
@@ -129,8 +131,18 @@ const TechniqueInfo kBitmaskTechnique = {
     "bitmask",
     "receiver-driven soft shadow mapping (Schwarz & Stamminger 2007/2008): micropatches "
     "back-projected into occlusion bitmasks, budget levels blended smoothly",
-    bitmask::kBitmaskParams, [](const Params& p) -> std::unique_ptr<Technique> {
+    bitmask::kBitmaskParams,
+    [](const Params& p) -> std::unique_ptr<Technique> {
         return std::make_unique<bitmask::Bitmask>(p);
+    },
+    nullptr,
+    // The light depth map with its depth ranges (HSM and MSSM), and the YSM.
+    [](const Params& p, std::uint64_t) {
+        const auto m = static_cast<std::uint64_t>(p.getInt("map_size"));
+        const auto ysm = static_cast<std::uint64_t>(p.getInt("ysm_size"));
+        return MemoryTerms{{"technique.map_size", "the light depth map and its depth ranges",
+                            saturatingProduct({m, m, 4 + 11 + 11})},
+                           {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};
     }};
 
 }  // namespace penumbra::techniques

@@ -39,7 +39,8 @@ inline constexpr std::array kBitmaskParams = {
     enumParam(kAccel, Accel::Ysm,
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid")
         .define(),
-    intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)"),
+    intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)")
+        .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kOccluders, Occluders::Microrect,
               "micro-occluders: microrects merged per level (5.2), texels, or quads between "
               "texel centres (bitmask only)"),

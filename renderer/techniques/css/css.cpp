@@ -126,6 +126,7 @@ const TechniqueInfo kCssTechnique = {
     "convolution soft shadows (Annen et al. 2008): prefiltered Fourier basis of the shadow test",
     css::kCssParams,
     [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Css>(p); },
-    fittedEnvironmentLights};
+    fittedEnvironmentLights,
+    css::memoryTerms};
 
 }  // namespace penumbra::techniques

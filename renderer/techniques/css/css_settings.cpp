@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "renderer/core/memory_limit.h"
+
 namespace penumbra::techniques::css {
 
 CssSettings cssSettings(const Params& p) {
@@ -34,6 +36,25 @@ CsmMaps::Filter filterFor(const CssSettings& s, const scene::RectLight& light) {
     const float a = light.size.x, b = light.size.y;
     const bool square = std::fabs(a - b) <= 1e-4f * std::max(a, b);
     return square ? CsmMaps::Filter::Mipmap : CsmMaps::Filter::Sat;
+}
+
+MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
+    const int map = p.getInt("map_size");
+    const auto m = static_cast<std::uint64_t>(map);
+    const int order = p.getInt("order");
+    const auto layers = 2 * static_cast<std::uint64_t>((order + 1) / 2) + 1;
+    const FilterChoice filter = p.getEnum(kFilter);
+    const std::uint64_t basis = saturatingProduct({m, m, 16, layers});
+    MemoryTerms out;
+    out.push_back(
+        {"technique.order",
+         "the basis images (" + squareText(map) + " x " + std::to_string(layers) + " RGBA32F)",
+         filter != FilterChoice::Sat ? basis + basis / 3 : basis, true});
+    if (filter != FilterChoice::Mipmap)
+        out.push_back({"technique.order", "the summed-area tables",
+                       saturatingProduct({m + 1, m + 1, 16, layers}), true});
+    out.push_back({"technique.map_size", "the shadow map", saturatingProduct({m, m, 4})});
+    return out;
 }
 
 }  // namespace penumbra::techniques::css

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
+#include "renderer/core/memory_term.h"
 #include "renderer/core/params.h"
 #include "renderer/scene/scene.h"
 #include "renderer/techniques/css/csm_maps.h"
@@ -67,6 +69,10 @@ struct CssSettings {
 };
 
 CssSettings cssSettings(const Params& params);
+
+// css's largest allocations for the memory budget: the basis images (with their mipmaps, or
+// their summed-area tables) and the shadow map.
+MemoryTerms memoryTerms(const Params& p, std::uint64_t pixels);
 
 // The prefilter for LIGHT: the chosen one, or with `auto` mipmaps for a square light and
 // summed-area tables for a rectangular one.

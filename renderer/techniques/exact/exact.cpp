@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "renderer/core/memory_limit.h"
 #include "renderer/passes/readback.h"
 #include "renderer/techniques/exact/environment_sampler.h"
 #include "renderer/techniques/exact/pixel_tracer.h"
@@ -172,6 +173,12 @@ const TechniqueInfo kExactTechnique = {
         EnvironmentLights env;
         env.irradiance_layer = true;
         return env;
+    },
+    // The G-buffer read back (position and normal, 32 bytes a pixel) and the layer it computes
+    // (16), on the CPU.
+    [](const Params&, std::uint64_t pixels) {
+        return MemoryTerms{{"image.width", "exact's readback and ray results (48 bytes a pixel)",
+                            saturatingProduct({pixels, 48})}};
     }};
 
 }  // namespace penumbra::techniques

@@ -152,8 +152,12 @@ void Ssm::render(frame::FrameContext& ctx) {
 }  // namespace ssm
 
 const TechniqueInfo kSsmTechnique = {
-    "ssm", "soft shadow maps (Atty et al. 2006): occluder micro-patches splatted as penumbra quads",
+    "ssm",
+    "soft shadow maps (Atty et al. 2006): occluder micro-patches splatted as penumbra quads",
     ssm::kSsmParams,
-    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<ssm::Ssm>(p); }};
+    [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<ssm::Ssm>(p); },
+    nullptr,
+    ssm::memoryTerms,
+    ssm::splatLimitError};
 
 }  // namespace penumbra::techniques

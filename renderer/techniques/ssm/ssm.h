@@ -32,7 +32,8 @@ inline constexpr std::array kSsmParams = {
         .uniform()
         .limitedBy(GlLimit::MaxTextureSize),
     intParam("ssm_size", 256, 16, 4096, "soft shadow map (and receiver map) width and height")
-        .uniform("u_ssm_res"),
+        .uniform("u_ssm_res")
+        .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
     boolParam("two_sided", false,
@@ -51,6 +52,15 @@ inline constexpr std::array kSsmParams = {
              "the paper: objects of role both occlude only and the receivers are the "
              "role-receiver objects"),
 };
+
+// ssm splats each of its map_size^2 micro-patches over up to ssm_size^2 texels: refused when
+// map_size x ssm_size exceeds this (the default 256 x 256 is 2^16).
+inline constexpr std::uint64_t kMaxSplatProduct = std::uint64_t{1} << 21;
+
+// ssm's largest allocations for the memory budget, and the bound above as a message ("" when
+// within it): budget.cpp.
+MemoryTerms memoryTerms(const Params& p, std::uint64_t pixels);
+std::string splatLimitError(const Params& p);
 
 // glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches.
 struct DrawCommand {

@@ -1,0 +1,39 @@
+// What ssm allocates and the work one frame's splat may take, checked before a render: see
+// ssm.h (memoryTerms, splatLimitError).
+#include <cstdint>
+#include <string>
+
+#include "renderer/core/memory_limit.h"
+#include "renderer/techniques/ssm/ssm.h"
+
+namespace penumbra::techniques::ssm {
+
+MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
+    using u64 = std::uint64_t;
+    const int ssm = p.getInt("ssm_size");
+    const auto m = static_cast<u64>(p.getInt("map_size"));
+    const auto s = static_cast<u64>(ssm);
+    const u64 sides = p.getBool("two_sided") ? 2 : 1;
+    const auto layers = static_cast<u64>(p.getInt("layers"));
+    MemoryTerms out;
+    out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
+                   saturatingProduct({m, m, 4 + 4 + 8, sides})});
+    // Per receiver layer: soft shadow maps (per side), depth and id, the farthest-receiver
+    // pyramid (4/3 of a float); plus the peeling's scratch depth and ids.
+    out.push_back({"technique.layers",
+                   "the soft shadow maps and receiver layers (" + squareText(ssm) + " x " +
+                       std::to_string(layers) + ")",
+                   saturatingProduct({s, s, (4 * sides + 4 + 4 + 6) * layers + 8})});
+    return out;
+}
+
+std::string splatLimitError(const Params& p) {
+    const auto map = static_cast<std::uint64_t>(p.getInt("map_size"));
+    const auto ssm = static_cast<std::uint64_t>(p.getInt("ssm_size"));
+    if (map * ssm <= kMaxSplatProduct) return {};
+    return "technique.ssm_size: map_size x ssm_size = " + std::to_string(map) + " x " +
+           std::to_string(ssm) + " exceeds the splat-work bound of " +
+           std::to_string(kMaxSplatProduct) + " (2^21)";
+}
+
+}  // namespace penumbra::techniques::ssm
