@@ -17,9 +17,8 @@ namespace {
 
 // The checks every camera passes, explicit or taken from a glTF.
 void checkCamera(const Camera& c, const Field& f) {
-    if (!(c.fov_y > 0.0f && c.fov_y < 180.0f))
-        f.member("fov_y").fail("must be in (0, 180) degrees");
-    if (!(c.near > 0.0f)) f.member("near").fail("must be > 0");
+    if (!(c.fov_y > 0.0f && c.fov_y < 180.0f)) f.member("fov_y").expected("degrees in (0, 180)");
+    if (!(c.near > 0.0f)) f.member("near").expected("a number > 0");
     if (!(c.far > c.near)) f.member("far").fail("must be greater than camera.near");
     const glm::vec3 view = c.target - c.position;
     if (glm::length(view) == 0.0f)

@@ -22,7 +22,7 @@ void checkLight(const RectLight& light, const Field& f) {
 
 glm::vec2 readLightSize(const Field& size) {
     const glm::vec2 s = size.vec2();
-    if (!(s.x > 0.0f && s.y > 0.0f)) size.fail("zero-size light (width and height must be > 0)");
+    if (!(s.x > 0.0f && s.y > 0.0f)) size.expected("a width and height > 0");
     return s;
 }
 
@@ -38,11 +38,11 @@ RectLight readRectLight(const Field& f) {
     if (const Field color = f.member("color"); color.present()) {
         light.color = color.vec3();
         if (light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f)
-            color.fail("must be >= 0");
+            color.expected("three numbers >= 0");
     }
     if (const Field intensity = f.member("intensity"); intensity.present()) {
         light.intensity = static_cast<float>(intensity.number());
-        if (light.intensity < 0.0f) intensity.fail("must be >= 0");
+        if (light.intensity < 0.0f) intensity.expected("a number >= 0");
     }
     checkLight(light, f);
     return light;

@@ -24,7 +24,7 @@ std::string exactKey(std::initializer_list<float> values) {
 
 float positive(const Field& f, float fallback) {
     const float v = static_cast<float>(f.numberOr(fallback));
-    if (!(v > 0.0f)) f.fail("must be > 0");
+    if (!(v > 0.0f)) f.expected("a number > 0");
     return v;
 }
 
@@ -37,7 +37,7 @@ glm::vec4 readBaseColor(const Field& material) {
     if (n != 3 && n != 4) f.expected("3 or 4 numbers in [0, 1]");
     const std::vector<double> v = f.numbers(n);
     for (double c : v)
-        if (c < 0.0 || c > 1.0) f.fail("components must be in [0, 1]");
+        if (c < 0.0 || c > 1.0) f.expected("3 or 4 numbers in [0, 1]");
     return {v[0], v[1], v[2], n == 4 ? v[3] : 1.0};
 }
 
@@ -62,7 +62,7 @@ std::shared_ptr<const Model> readPrimitive(const Field& f, const std::string& sh
         f.expectObject({"size"});
         const Field size = f.member("size");
         const glm::vec2 s = size.present() ? size.vec2() : glm::vec2(1.0f);
-        if (!(s.x > 0.0f && s.y > 0.0f)) size.fail("must be > 0");
+        if (!(s.x > 0.0f && s.y > 0.0f)) size.expected("two numbers > 0");
         return sharedPrimitive(context, shape, exactKey({s.x, s.y}), color,
                                [&] { return makePlane(s); });
     }
@@ -70,7 +70,7 @@ std::shared_ptr<const Model> readPrimitive(const Field& f, const std::string& sh
         f.expectObject({"size"});
         const Field size = f.member("size");
         const glm::vec3 s = size.vec3Or(glm::vec3(1.0f));
-        if (!(s.x > 0.0f && s.y > 0.0f && s.z > 0.0f)) size.fail("must be > 0");
+        if (!(s.x > 0.0f && s.y > 0.0f && s.z > 0.0f)) size.expected("three numbers > 0");
         return sharedPrimitive(context, shape, exactKey({s.x, s.y, s.z}), color,
                                [&] { return makeBox(s); });
     }
@@ -140,7 +140,8 @@ glm::mat4 readTransform(const Field& object) {
         } else {
             s.expected("a number or 3 numbers");
         }
-        if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f) s.fail("must be nonzero");
+        if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f)
+            s.expected("nonzero scale factors");
     }
     const glm::mat4 m = composeTransform(translate, rotate, scale);
     if (const std::string problem = matrixProblem(m); !problem.empty()) transform.fail(problem);

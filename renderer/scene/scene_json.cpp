@@ -26,7 +26,7 @@ ImageSettings readImage(const Field& f, int max_size) {
     if (samples.present()) {
         image.samples = static_cast<int>(samples.integer(1, 8));
         if (image.samples != 1 && image.samples != 2 && image.samples != 4 && image.samples != 8)
-            samples.fail("must be 1, 2, 4 or 8");
+            samples.expected("1, 2, 4 or 8");
     }
     return image;
 }
@@ -47,7 +47,7 @@ std::optional<Environment> readEnvironment(const Field& f, const SceneContext& c
     }
     const Field intensity = f.member("intensity");
     env.intensity = static_cast<float>(intensity.numberOr(env.intensity));
-    if (env.intensity < 0.0f) intensity.fail("must be >= 0");
+    if (env.intensity < 0.0f) intensity.expected("a number >= 0");
     env.rotation_y = static_cast<float>(f.member("rotation_y").numberOr(env.rotation_y));
     return env;
 }

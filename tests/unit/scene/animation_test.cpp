@@ -108,9 +108,9 @@ TEST(Animation, RejectionsNameTheTrack) {
          "animation.tracks.0: unknown key 'ease' (allowed: key, keys)"},
         // A value out of range at a key frame fails at load, naming the track and the key.
         {R"([{"key": "camera.fov_y", "keys": [[1, 30]]}, {"key": "lights.0.intensity", "keys": [[1, 1], [10, -1]]}])",
-         "animation.tracks.1.keys.1: at frame 10: lights.0.intensity: must be >= 0"},
+         "animation.tracks.1.keys.1: at frame 10: lights.0.intensity: expected a number >= 0"},
         {R"([{"key": "objects.1.sphere.radius", "keys": [[0, 1], [4, 0]]}])",
-         "animation.tracks.0.keys.1: at frame 4: objects.1.sphere.radius: must be > 0"},
+         "animation.tracks.0.keys.1: at frame 4: objects.1.sphere.radius: expected a number > 0"},
         // The image's size and samples are one per render: animating them is refused.
         {R"([{"key": "image.width", "keys": [[0, 64], [10, 65]]}])",
          "animation.tracks.0.key: 'image.width' cannot be animated (one image size per render)"},

@@ -299,7 +299,7 @@ TEST(GltfScene, RefusesBadReferences) {
                   "lights.0.gltf: " + (test::scratchDir() / "ref.gltf").string() +
                       " has no KHR_lights_punctual light");
     expectMessage(error(nullptr, json::array({{{"gltf", "ref.gltf"}, {"size", {0, 1}}}})),
-                  "lights.0.size: zero-size light");
+                  "lights.0.size: expected a width and height > 0");
     expectMessage(error(nullptr, json::array({{{"gltf", "ref.gltf"}, {"sise", {1, 1}}}})),
                   "lights.0: unknown key 'sise' (did you mean 'size'?");
 }

@@ -83,7 +83,7 @@ TEST(Overrides, ValuesAreValidatedLikeTheFile) {
     expectMessage(inputErrorOf([] {
                       test::loadDoc(test::minimalScene(), {{"camera.fov_y", "200"}});
                   }),
-                  path + ": camera.fov_y: must be in (0, 180)");
+                  path + ": camera.fov_y: expected degrees in (0, 180)");
     expectMessage(inputErrorOf([] {
                       test::loadDoc(test::minimalScene(), {{"camera.fvo", "20"}});
                   }),

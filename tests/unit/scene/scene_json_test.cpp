@@ -116,14 +116,14 @@ const std::vector<Rejection>& rejections() {
          },
          "camera.position: expected 3 numbers within +-3.4e38, got [1,1e+39,2]"},
         {"camera fov 0", [](json& d) { d["camera"]["fov_y"] = 0; },
-         "camera.fov_y: must be in (0, 180)"},
+         "camera.fov_y: expected degrees in (0, 180)"},
         {"camera fov 180", [](json& d) { d["camera"]["fov_y"] = 180; },
-         "camera.fov_y: must be in (0, 180)"},
+         "camera.fov_y: expected degrees in (0, 180)"},
         {"camera fov string", [](json& d) { d["camera"]["fov_y"] = "wide"; },
          "camera.fov_y: expected a number, got \"wide\""},
         {"camera fov huge", [](json& d) { d["camera"]["fov_y"] = 1e300; },
          "camera.fov_y: expected a number within +-3.4e38, got 1e+300"},
-        {"camera near 0", [](json& d) { d["camera"]["near"] = 0; }, "camera.near: must be > 0"},
+        {"camera near 0", [](json& d) { d["camera"]["near"] = 0; }, "camera.near: expected a number > 0"},
         {"camera far", [](json& d) { d["camera"]["far"] = 0.01; },
          "camera.far: must be greater than camera.near"},
         {"camera target", [](json& d) { d["camera"]["target"] = d["camera"]["position"]; },
@@ -148,7 +148,7 @@ const std::vector<Rejection>& rejections() {
         {"image height type", [](json& d) { d["image"]["height"] = "48"; },
          "image.height: expected an integer in 1..16384, got \"48\""},
         {"image samples", [](json& d) { d["image"]["samples"] = 3; },
-         "image.samples: must be 1, 2, 4 or 8"},
+         "image.samples: expected 1, 2, 4 or 8"},
         {"image unknown key", [](json& d) { d["image"]["msaa"] = 4; }, "image: unknown key 'msaa'"},
         {"lights type", [](json& d) { d["lights"] = json::object(); },
          "lights: expected an array, got {}"},
@@ -161,21 +161,21 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["lights"][0]["size"] = {0, 1};
          },
-         "lights.0.size: zero-size light"},
+         "lights.0.size: expected a width and height > 0"},
         {"light negative size",
          [](json& d) {
              d["lights"][0]["size"] = {1, -1};
          },
-         "lights.0.size: zero-size light"},
+         "lights.0.size: expected a width and height > 0"},
         {"light size shape", [](json& d) { d["lights"][0]["size"] = 1; },
          "lights.0.size: expected 2 numbers, got 1"},
         {"light color",
          [](json& d) {
              d["lights"][0]["color"] = {1, -0.5, 1};
          },
-         "lights.0.color: must be >= 0"},
+         "lights.0.color: expected three numbers >= 0"},
         {"light intensity", [](json& d) { d["lights"][0]["intensity"] = -1; },
-         "lights.0.intensity: must be >= 0"},
+         "lights.0.intensity: expected a number >= 0"},
         {"light target", [](json& d) { d["lights"][0]["target"] = d["lights"][0]["position"]; },
          "lights.0.target: same as position"},
         {"light up parallel",
@@ -229,7 +229,7 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["objects"][0]["plane"]["size"] = {0, 1};
          },
-         "objects.0.plane.size: must be > 0"},
+         "objects.0.plane.size: expected two numbers > 0"},
         {"plane unknown key", [](json& d) { d["objects"][0]["plane"]["width"] = 1; },
          "objects.0.plane: unknown key 'width' (allowed: size)"},
         {"box size shape",
@@ -241,9 +241,9 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["objects"][1] = {{"box", {{"size", {1, -1, 1}}}}};
          },
-         "objects.1.box.size: must be > 0"},
+         "objects.1.box.size: expected three numbers > 0"},
         {"sphere radius", [](json& d) { d["objects"][1]["sphere"]["radius"] = 0; },
-         "objects.1.sphere.radius: must be > 0"},
+         "objects.1.sphere.radius: expected a number > 0"},
         {"sphere segments big", [](json& d) { d["objects"][1]["sphere"]["segments"] = 5000; },
          "objects.1.sphere.segments: expected an integer in 3..1024, got 5000"},
         {"sphere segments small", [](json& d) { d["objects"][1]["sphere"]["segments"] = 2; },
@@ -281,7 +281,7 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["objects"][1]["transform"]["scale"] = {1, 0, 1};
          },
-         "objects.1.transform.scale: must be nonzero"},
+         "objects.1.transform.scale: expected nonzero scale factors"},
         {"transform rotate",
          [](json& d) {
              d["objects"][1]["transform"]["rotate"] = {0, "x", 0};
@@ -316,7 +316,7 @@ const std::vector<Rejection>& rejections() {
          [](json& d) {
              d["objects"][0]["material"] = {{"base_color", {2, 0, 0}}};
          },
-         "objects.0.material.base_color: components must be in [0, 1]"},
+         "objects.0.material.base_color: expected 3 or 4 numbers in [0, 1]"},
         {"base color size",
          [](json& d) {
              d["objects"][0]["material"] = {{"base_color", {1, 1}}};
