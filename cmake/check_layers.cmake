@@ -1,5 +1,6 @@
 # Include order between the layers: fails (naming file, line and include) when a file under
-# renderer/<layer>/ or cli/ includes a folder its layer may not see. Run by the build (target
+# renderer/<layer>/ or cli/ includes a folder its layer may not see, or when a technique reads
+# a parameter by its key's text instead of its typed key. Run by the build (target
 # penumbra_layers_checked) and by ctest (unit.layers): cmake -DSOURCE_DIR=... -P check_layers.cmake
 cmake_minimum_required(VERSION 3.25)
 
@@ -61,3 +62,19 @@ if(_problems)
             "(core < scene, output, gl < passes < frame < techniques < app < cli):\n${_problems}")
 endif()
 message(STATUS "check_layers: ${_count} files include only the layers below them")
+
+# A technique reads its parameters through typed keys (Params::get(kKey), params.h), declared
+# once beside its table: a key spelled again as text in a getter is refused here.
+file(GLOB_RECURSE _technique_files ${SOURCE_DIR}/renderer/techniques/*.h
+     ${SOURCE_DIR}/renderer/techniques/*.cpp)
+foreach(file ${_technique_files})
+    file(STRINGS ${file} _reads REGEX "\\.get(Int|Float|Bool|String)\\(\"")
+    foreach(line ${_reads})
+        file(RELATIVE_PATH _rel ${SOURCE_DIR} ${file})
+        string(STRIP "${line}" line)
+        string(APPEND _problems "  ${_rel}: ${line}: read it with Params::get and its key\n")
+    endforeach()
+endforeach()
+if(_problems)
+    message(FATAL_ERROR "check_layers: parameters read by a key's text:\n${_problems}")
+endif()

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -77,16 +78,28 @@ struct EnumKey {
     }
 };
 
-constexpr ParamSpec intParam(std::string_view key, int def, int min, int max,
-                             std::string_view doc) {
-    return {key, ParamType::Int, double(def), double(min), double(max), {}, {}, doc};
+// A parameter's key with its C++ type T (int, double, bool or std::string): the table's spec is
+// made from it (intParam(kKey, ...)) and the technique reads it with Params::get(kKey), so a key
+// is spelled once, where it is declared, and read as the type the table gives it: a misspelled
+// key does not compile, nor does reading a float as an int.
+template <class T>
+struct ParamKey {
+    std::string_view key;
+};
+using IntKey = ParamKey<int>;
+using FloatKey = ParamKey<double>;
+using BoolKey = ParamKey<bool>;
+using TextKey = ParamKey<std::string>;
+
+constexpr ParamSpec intParam(IntKey key, int def, int min, int max, std::string_view doc) {
+    return {key.key, ParamType::Int, double(def), double(min), double(max), {}, {}, doc};
 }
-constexpr ParamSpec floatParam(std::string_view key, double def, double min, double max,
+constexpr ParamSpec floatParam(FloatKey key, double def, double min, double max,
                                std::string_view doc) {
-    return {key, ParamType::Float, def, min, max, {}, {}, doc};
+    return {key.key, ParamType::Float, def, min, max, {}, {}, doc};
 }
-constexpr ParamSpec boolParam(std::string_view key, bool def, std::string_view doc) {
-    return {key, ParamType::Bool, def ? 1.0 : 0.0, 0, 1, {}, {}, doc};
+constexpr ParamSpec boolParam(BoolKey key, bool def, std::string_view doc) {
+    return {key.key, ParamType::Bool, def ? 1.0 : 0.0, 0, 1, {}, {}, doc};
 }
 
 // The Enum parameter of KEY (static storage: the spec points at its names) with default DEF.
@@ -111,8 +124,8 @@ constexpr ParamSpec enumParam(const EnumKey<E, N>& key, E def, std::string_view 
 }
 
 // A free-form text value (e.g. a file path); DEF may be empty.
-constexpr ParamSpec stringParam(std::string_view key, std::string_view def, std::string_view doc) {
-    return {key, ParamType::String, 0, 0, 0, {}, def, doc};
+constexpr ParamSpec stringParam(TextKey key, std::string_view def, std::string_view doc) {
+    return {key.key, ParamType::String, 0, 0, 0, {}, def, doc};
 }
 
 // The rows of A followed by those of B: a technique's table that includes rows declared where
@@ -136,11 +149,25 @@ class Params {
 public:
     Params() = default;
     explicit Params(nlohmann::json values) : values_(std::move(values)) {}
+    // A value by its key's name, for code that walks a table (uniforms, GL limits); a
+    // technique reads its own keys with get().
     int getInt(std::string_view key) const;
     double getFloat(std::string_view key) const;
     bool getBool(std::string_view key) const;
     // An Enum's chosen name or a String's text.
     std::string getString(std::string_view key) const;
+    // KEY's value as its table's type.
+    template <class T>
+    T get(ParamKey<T> key) const {
+        if constexpr (std::is_same_v<T, int>)
+            return getInt(key.key);
+        else if constexpr (std::is_same_v<T, double>)
+            return getFloat(key.key);
+        else if constexpr (std::is_same_v<T, bool>)
+            return getBool(key.key);
+        else
+            return getString(key.key);
+    }
     // Enum KEY as its C++ enumerator.
     template <class E, std::size_t N>
     E getEnum(const EnumKey<E, N>& key) const {

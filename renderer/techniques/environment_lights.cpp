@@ -62,11 +62,11 @@ scene::RectLight farLight(const scene::Scene& s, const scene::FittedLight& l) {
 
 EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s) {
     scene::FitSettings settings;
-    settings.threshold = p.getFloat("env_threshold");
-    settings.max_lights = p.getInt("env_lights");
+    settings.threshold = p.get(kEnvThreshold);
+    settings.max_lights = p.get(kEnvLights);
     settings.square = p.getEnum(kEnvShape) == EnvShape::Square;
-    const int face_size = p.getInt("env_face_size");
-    const std::string file = p.getString("env_lights_file");
+    const int face_size = p.get(kEnvFaceSize);
+    const std::string file = p.get(kEnvLightsFile);
     scene::LightFit fit;
     if (file.empty()) {
         fit = scene::fitLights(facesOf(s, face_size), settings);
@@ -86,7 +86,7 @@ EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s
 }
 
 EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& s) {
-    const int count = p.getInt("env_samples");
+    const int count = p.get(kEnvSamples);
     const scene::CubeFaces faces = facesOf(s, kSampleFaceSize);
     const int n = faces.size;
     std::vector<double> cdf;  // over face-major texels
@@ -96,7 +96,7 @@ EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& 
     EnvironmentLights out;
     out.stats["env_samples"] = count;
     if (!(total > 0)) return out;
-    const std::uint32_t seed = static_cast<std::uint32_t>(p.getInt("seed"));
+    const std::uint32_t seed = static_cast<std::uint32_t>(p.get(kSeed));
     for (int k = 0; k < count; ++k) {
         // Stratified in the cumulative energy: sample k lies in [k, k + 1) / count of it.
         const double target =

@@ -7,6 +7,7 @@
 
 #include "renderer/core/params.h"
 #include "renderer/scene/light_fitting.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::techniques {
@@ -14,14 +15,19 @@ namespace penumbra::techniques {
 enum class EnvShape { Square, Rect };
 inline constexpr EnumKey<EnvShape, 2> kEnvShape{"env_shape", {"square", "rect"}};
 
+inline constexpr FloatKey kEnvThreshold{"env_threshold"};
+inline constexpr IntKey kEnvLights{"env_lights"};
+inline constexpr IntKey kEnvFaceSize{"env_face_size"};
+inline constexpr TextKey kEnvLightsFile{"env_lights_file"};
+
 // The rows fittedEnvironmentLights reads; `css` ends its table with them.
 inline constexpr std::array kFittedEnvironmentParams = {
-    floatParam("env_threshold", 0.1, 0.001, 0.999,
+    floatParam(kEnvThreshold, 0.1, 0.001, 0.999,
                "environment: fitting threshold t (enlarge while E_added / E_enlarged > t)"),
-    intParam("env_lights", 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
+    intParam(kEnvLights, 30, 1, 1024, "environment: the most lights fitted (brightest first)"),
     enumParam(kEnvShape, EnvShape::Square, "environment: shape of the fitted lights"),
-    intParam("env_face_size", 32, 4, 256, "environment: cube face resolution for the fitting"),
-    stringParam("env_lights_file", "",
+    intParam(kEnvFaceSize, 32, 4, 256, "environment: cube face resolution for the fitting"),
+    stringParam(kEnvLightsFile, "",
                 "environment: lights from a `penumbra fit-lights` JSON (relative to the scene "
                 "file) instead of fitting; empty = fit"),
 };
@@ -29,7 +35,7 @@ inline constexpr std::array kFittedEnvironmentParams = {
 // The row sampledEnvironmentLights reads besides the technique's `seed`; `reference` ends its
 // table with it.
 inline constexpr std::array kSampledEnvironmentParams = {
-    intParam("env_samples", 512, 1, 1024,
+    intParam(kEnvSamples, 512, 1, 1024,
              "environment: directions sampled by energy, one hard shadow map each"),
 };
 

@@ -2,6 +2,7 @@
 #include <array>
 
 #include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/registry_entries.h"
 
 namespace penumbra::techniques {
@@ -9,7 +10,7 @@ namespace {
 
 constexpr std::array kHardParams = {
     mapSizeParam(2048),
-    intParam("pcf", 1, 1, 15, "PCF kernel width in texels (1 = a single hard test)"),
+    intParam(kPcf, 1, 1, 15, "PCF kernel width in texels (1 = a single hard test)"),
     kNormalOffsetParam,
     kDepthBiasParam,
 };
@@ -17,7 +18,7 @@ constexpr std::array kHardParams = {
 class Hard final : public Technique {
 public:
     explicit Hard(const Params& p) : settings_(samplingSettings(p)) {
-        settings_.test.pcf = p.getInt("pcf");
+        settings_.test.pcf = p.get(kPcf);
         settings_.batch = 1;
     }
     void prepare(const gl::ContextInfo& gl, const passes::GpuScene&) override {

@@ -10,14 +10,14 @@ namespace penumbra::techniques {
 
 SamplingSettings samplingSettings(const Params& p) {
     SamplingSettings s;
-    s.map_size = p.getInt("map_size");
-    s.test.normal_offset = static_cast<float>(p.getFloat("normal_offset"));
-    s.test.depth_bias = static_cast<float>(p.getFloat("depth_bias"));
+    s.map_size = p.get(kMapSize);
+    s.test.normal_offset = static_cast<float>(p.get(kNormalOffset));
+    s.test.depth_bias = static_cast<float>(p.get(kDepthBias));
     return s;
 }
 
 MemoryTerm shadowMapArrayTerm(const Params& p, int layers) {
-    const int map = p.getInt("map_size");
+    const int map = p.get(kMapSize);
     const auto m = static_cast<std::uint64_t>(map);
     std::string what = layers == 1 ? "the shadow map (" + squareText(map) + ")"
                                    : "the shadow map array (" + squareText(map) + " x " +

@@ -14,6 +14,7 @@
 #include "renderer/frame/frame_context.h"
 #include "renderer/gl/context.h"
 #include "renderer/passes/shadow_maps.h"
+#include "renderer/techniques/param_keys.h"
 
 namespace penumbra::techniques {
 
@@ -46,14 +47,14 @@ private:
 
 // The parameter rows every shadow-map-sampling technique shares (hard, reference).
 constexpr ParamSpec mapSizeParam(int def) {
-    return intParam("map_size", def, 16, 16384, "shadow map width and height in texels")
+    return intParam(kMapSize, def, 16, 16384, "shadow map width and height in texels")
         .limitedBy(GlLimit::MaxTextureSize);
 }
 constexpr ParamSpec kNormalOffsetParam =
-    floatParam("normal_offset", 1.5, 0.0, 16.0,
+    floatParam(kNormalOffset, 1.5, 0.0, 16.0,
                "receiver offset along its normal, in shadow-map texels (against acne)");
 constexpr ParamSpec kDepthBiasParam =
-    floatParam("depth_bias", 0.0005, 0.0, 0.1,
+    floatParam(kDepthBias, 0.0005, 0.0, 0.1,
                "constant bias subtracted from receiver depth, in units of the caster depth range");
 
 // Settings from the shared rows above.

@@ -8,18 +8,21 @@
 #include "renderer/techniques/environment_lights.h"
 #include "renderer/techniques/jitter_hash.h"
 #include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/registry_entries.h"
 
 namespace penumbra::techniques {
 namespace {
 
+constexpr IntKey kBatch{"batch"};
+
 constexpr std::array kReferenceParams = joinParams(
     std::array{
-        intParam("samples", 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
-        boolParam("jitter", true, "jitter each sample inside its stratum (false: stratum centres)"),
-        intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
+        intParam(kSamples, 16, 1, 32, "N: the light is sampled on an N x N stratified grid"),
+        boolParam(kJitter, true, "jitter each sample inside its stratum (false: stratum centres)"),
+        intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter pattern"),
         mapSizeParam(1024),
-        intParam("batch", 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
+        intParam(kBatch, 32, 1, 256, "shadow maps per texture-array batch (memory vs. passes)"),
         kNormalOffsetParam,
         kDepthBiasParam,
     },
@@ -28,11 +31,11 @@ constexpr std::array kReferenceParams = joinParams(
 class Reference final : public Technique {
 public:
     explicit Reference(const Params& p)
-        : n_(p.getInt("samples")),
-          jitter_(p.getBool("jitter")),
-          seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
+        : n_(p.get(kSamples)),
+          jitter_(p.get(kJitter)),
+          seed_(static_cast<std::uint32_t>(p.get(kSeed))),
           settings_(samplingSettings(p)) {
-        settings_.batch = p.getInt("batch");
+        settings_.batch = p.get(kBatch);
         const float w = 1.0f / static_cast<float>(n_ * n_);
         for (int j = 0; j < n_; ++j)
             for (int i = 0; i < n_; ++i) {
@@ -72,8 +75,8 @@ const TechniqueInfo kReferenceTechnique = {
     [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Reference>(p); },
     sampledEnvironmentLights,
     [](const Params& p, std::uint64_t) {
-        const int n = p.getInt("samples");
-        return MemoryTerms{shadowMapArrayTerm(p, std::min(p.getInt("batch"), n * n))};
+        const int n = p.get(kSamples);
+        return MemoryTerms{shadowMapArrayTerm(p, std::min(p.get(kBatch), n * n))};
     }};
 
 }  // namespace penumbra::techniques

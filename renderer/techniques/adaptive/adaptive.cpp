@@ -16,28 +16,28 @@ namespace adaptive {
 
 Adaptive::Adaptive(const Params& p)
     : error_metric_(p.getEnum(kMetric) == Metric::Error),
-      target_error_(p.getFloat("target_error")),
-      epsilon_(p.getFloat("epsilon")),
+      target_error_(p.get(kTargetError)),
+      epsilon_(p.get(kEpsilon)),
       screen_metric_(p.getEnum(kMetricArea) == MetricArea::Screen),
-      tile_epsilon_(p.getFloat("tile_epsilon")),
+      tile_epsilon_(p.get(kTileEpsilon)),
       light_centre_(p.getEnum(kReprojection) == Reprojection::LightCentre),
-      max_depth_(p.getInt("max_depth")),
-      max_maps_(p.getInt("max_maps")),
+      max_depth_(p.get(kMaxDepth)),
+      max_maps_(p.get(kMaxMaps)),
       weighting_(p.getEnum(kWeights)),
       accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
       subdivision_(p.getEnum(kSubdivision)),
-      jitter_(p.getBool("jitter")),
-      seed_(static_cast<unsigned>(p.getInt("seed"))),
+      jitter_(p.get(kJitter)),
+      seed_(static_cast<unsigned>(p.get(kSeed))),
       settings_(samplingSettings(p)) {
-    compare_.gamma = static_cast<float>(p.getFloat("gamma"));
+    compare_.gamma = static_cast<float>(p.get(kGamma));
     compare_.relative = p.getEnum(kGammaMode) == GammaMode::Relative;
     const Compare compare = p.getEnum(kCompare);
     compare_.tests = compare == Compare::ShadowTest || (compare == Compare::Auto && error_metric_);
     compare_.normal_offset = settings_.test.normal_offset;
     compare_.depth_bias = settings_.test.depth_bias;
-    if (p.getEnum(kMetric) == Metric::Tile) compare_.tile_size = p.getInt("tile_size");
-    compare_.stride = p.getInt("compare_stride");
-    settings_.test.pcf = p.getInt("pcf");
+    if (p.getEnum(kMetric) == Metric::Tile) compare_.tile_size = p.get(kTileSize);
+    compare_.stride = p.get(kCompareStride);
+    settings_.test.pcf = p.get(kPcf);
     if (accumulate_path_ && weighting_ == Weighting::Area)
         throw RuntimeError(
             "adaptive: evaluation \"accumulate\" adds each map when it is rendered, before "
@@ -208,8 +208,8 @@ const TechniqueInfo kAdaptiveTechnique = {
     nullptr,
     // The maps, the scratch batch and the light-view G-buffer (48 bytes a texel).
     [](const Params& p, std::uint64_t) {
-        const int maps = p.getInt("max_maps");
-        const auto m = static_cast<std::uint64_t>(p.getInt("map_size"));
+        const int maps = p.get(adaptive::kMaxMaps);
+        const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         MemoryTerms out = {shadowMapArrayTerm(p, maps),
                            shadowMapArrayTerm(p, std::min(adaptive::kScratchLayers, maps))};
         out[1].what = "the scratch maps";

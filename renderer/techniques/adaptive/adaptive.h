@@ -13,6 +13,7 @@
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/light_sampling.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::techniques::adaptive {
@@ -35,6 +36,15 @@ inline constexpr EnumKey<Subdivision, 3> kSubdivision{"subdivision", {"auto", "q
 inline constexpr EnumKey<Weighting, 3> kWeights{"weights", {"area", "paper", "equal"}};
 inline constexpr EnumKey<Evaluation, 2> kEvaluation{"evaluation", {"array", "accumulate"}};
 
+inline constexpr FloatKey kTargetError{"target_error"};
+inline constexpr FloatKey kEpsilon{"epsilon"};
+inline constexpr FloatKey kGamma{"gamma"};
+inline constexpr IntKey kTileSize{"tile_size"};
+inline constexpr FloatKey kTileEpsilon{"tile_epsilon"};
+inline constexpr IntKey kCompareStride{"compare_stride"};
+inline constexpr IntKey kMaxDepth{"max_depth"};
+inline constexpr IntKey kMaxMaps{"max_maps"};
+
 inline constexpr std::array kAdaptiveParams = {
     enumParam(kMetric, Metric::Error,
               "error: split the cells whose corner maps leave the largest estimated visibility "
@@ -42,14 +52,14 @@ inline constexpr std::array kAdaptiveParams = {
               "image size); global: eq. 4 with epsilon over the whole frame (paper); tile: "
               "refine when any screen tile's disagreeing share reaches tile_epsilon (the local "
               "metric 5.1 asks for)"),
-    floatParam("target_error", 0.02, 0.0, 1.0,
+    floatParam(kTargetError, 0.02, 0.0, 1.0,
                "metric \"error\": the shadow-region error of visibility (mean |V - V_true| over "
                "shadowed pixels) that the light's subdivision may leave; a cell's estimate is "
                "1/4 x its share of the light x its disagreeing over the shadowed pixels"),
-    floatParam("epsilon", 0.003, 0.0, 1.0,
+    floatParam(kEpsilon, 0.003, 0.0, 1.0,
                "metric \"global\": refine when disagreeing pixels / metric area >= epsilon "
                "(eq. 4)"),
-    floatParam("gamma", 0.01, 0.0, 1.0,
+    floatParam(kGamma, 0.01, 0.0, 1.0,
                "two stored depths are equal when they differ by less than gamma (eq. 3 / 7)"),
     enumParam(kCompare, Compare::Auto,
               "what two maps are compared on: their stored depths (paper, with gamma) or their "
@@ -60,16 +70,16 @@ inline constexpr std::array kAdaptiveParams = {
     enumParam(kReprojection, Reprojection::Camera,
               "where maps are compared: the camera view (view-dependent) or a map_size^2 view "
               "from the light's centre (view-independent, section 4.1)"),
-    intParam("tile_size", 32, 4, 1024, "tile side in pixels for metric \"tile\""),
-    floatParam("tile_epsilon", 0.05, 0.0, 1.0,
+    intParam(kTileSize, 32, 4, 1024, "tile side in pixels for metric \"tile\""),
+    floatParam(kTileEpsilon, 0.05, 0.0, 1.0,
                "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
     enumParam(kMetricArea, MetricArea::Map,
               "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
-    intParam("compare_stride", 2, 1, 8,
+    intParam(kCompareStride, 2, 1, 8,
              "compare at every k-th pixel along x and y of the comparison view, counting each "
              "disagreement as k^2 pixels (1: every pixel, as the paper)"),
-    intParam("max_depth", 3, 0, 8, "deepest quadtree level"),
-    intParam("max_maps", 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
+    intParam(kMaxDepth, 3, 0, 8, "deepest quadtree level"),
+    intParam(kMaxMaps, 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
     enumParam(kSubdivision, Subdivision::Auto,
               "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
               "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
@@ -79,11 +89,11 @@ inline constexpr std::array kAdaptiveParams = {
     enumParam(kEvaluation, Evaluation::Array,
               "array: all maps in one pass over a texture array (3.4.2); accumulate: each map "
               "added to the accumulation buffer right after it is rendered (3.4.1)"),
-    boolParam("jitter", true,
+    boolParam(kJitter, true,
               "move each sample to a random point of its finest-grid cell (false: the paper's "
               "regular lattice, which aliases with edges parallel to the light's)"),
-    intParam("seed", 1, 0, 1 << 30, "seed of the jitter pattern"),
-    intParam("pcf", 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
+    intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter pattern"),
+    intParam(kPcf, 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
     mapSizeParam(1024),
     kNormalOffsetParam,
     kDepthBiasParam,

@@ -26,18 +26,18 @@ bool isPowerOfTwo(int n) {
 
 Bitmask::Bitmask(const Params& p)
     : params_(p),
-      map_size_(p.getInt("map_size")),
+      map_size_(p.get(kMapSize)),
       accel_(p.getEnum(kAccel)),
-      ysm_size_(p.getInt("ysm_size")),
+      ysm_size_(p.get(kYsmSize)),
       microrects_(p.getEnum(kOccluders) == Occluders::Microrect),
       microquads_(p.getEnum(kOccluders) == Occluders::Microquad),
       use_bitmask_(p.getEnum(kVisibility) == Visibility::Bitmask),
-      bits_(p.getInt("bits")),
+      bits_(p.get(kBits)),
       pattern_(p.getEnum(bitmask::kPattern)),
-      seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
-      budget_(p.getInt("budget")),
-      budget_map_file_(p.getString("budget_map")),
-      smooth_(p.getBool("smooth")) {
+      seed_(static_cast<std::uint32_t>(p.get(kSeed))),
+      budget_(p.get(kBudget)),
+      budget_map_file_(p.get(kBudgetMap)),
+      smooth_(p.get(kSmooth)) {
     if (!isPowerOfTwo(map_size_))
         throw InputError("technique.map_size: must be a power of two, got " +
                          std::to_string(map_size_));
@@ -138,8 +138,8 @@ const TechniqueInfo kBitmaskTechnique = {
     nullptr,
     // The light depth map with its depth ranges (HSM and MSSM), and the YSM.
     [](const Params& p, std::uint64_t) {
-        const auto m = static_cast<std::uint64_t>(p.getInt("map_size"));
-        const auto ysm = static_cast<std::uint64_t>(p.getInt("ysm_size"));
+        const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
+        const auto ysm = static_cast<std::uint64_t>(p.get(bitmask::kYsmSize));
         return MemoryTerms{{"technique.map_size", "the light depth map and its depth ranges",
                             saturatingProduct({m, m, 4 + 11 + 11})},
                            {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};

@@ -19,6 +19,7 @@
 #include "renderer/techniques/bitmask/loq_targets.h"
 #include "renderer/techniques/bitmask/microrects.h"
 #include "renderer/techniques/bitmask/sample_pattern.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
 
 namespace penumbra::techniques::bitmask {
@@ -32,56 +33,69 @@ inline constexpr EnumKey<Occluders, 3> kOccluders{"occluders",
                                                   {"micropatch", "microquad", "microrect"}};
 inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "area"}};
 
+inline constexpr IntKey kYsmSize{"ysm_size"};
+inline constexpr IntKey kBits{"bits"};
+inline constexpr BoolKey kGapFill{"gap_fill"};
+inline constexpr IntKey kBudget{"budget"};
+inline constexpr BoolKey kBudgetFalloff{"budget_falloff"};
+inline constexpr IntKey kBudgetEdge{"budget_edge"};
+inline constexpr TextKey kBudgetMap{"budget_map"};
+inline constexpr BoolKey kSmooth{"smooth"};
+inline constexpr IntKey kSmoothRadius{"smooth_radius"};
+inline constexpr FloatKey kDepthTolerance{"depth_tolerance"};
+inline constexpr IntKey kRefineSteps{"refine_steps"};
+inline constexpr BoolKey kGrowQuery{"grow_query"};
+
 inline constexpr std::array kBitmaskParams = {
-    intParam("map_size", 1024, 16, 4096, "light depth map width and height (a power of two)")
+    intParam(kMapSize, 1024, 16, 4096, "light depth map width and height (a power of two)")
         .uniform()
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kAccel, Accel::Ysm,
               "search-area depth ranges: min/max pyramid, multi-scale map, or their hybrid")
         .define(),
-    intParam("ysm_size", 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)")
+    intParam(kYsmSize, 256, 16, 4096, "the YSM's MSSM part: width and height (a power of two)")
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kOccluders, Occluders::Microrect,
               "micro-occluders: microrects merged per level (5.2), texels, or quads between "
               "texel centres (bitmask only)"),
     enumParam(kVisibility, Visibility::Bitmask,
               "occlusion bitmask of light samples, or summed back-projected area"),
-    intParam("bits", 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
+    intParam(kBits, 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
     enumParam(kPattern, Pattern::Jittered, "light sample pattern"),
-    intParam("seed", 1, 0, 1 << 30, "seed of the jittered or random pattern"),
-    boolParam("gap_fill", true, "extend micropatches towards farther neighbours (no light leaks)")
+    intParam(kSeed, 1, 0, 1 << 30, "seed of the jittered or random pattern"),
+    boolParam(kGapFill, true, "extend micropatches towards farther neighbours (no light leaks)")
         .define(),
-    intParam("budget", 12, 0, 64,
+    intParam(kBudget, 12, 0, 64,
              "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
              "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
              "also back-projects the finer floor level")
         .uniform(),
-    boolParam("budget_falloff", false,
+    boolParam(kBudgetFalloff, false,
               "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners")
         .uniform(),
-    intParam("budget_edge", 5, 2, 64,
+    intParam(kBudgetEdge, 5, 2, 64,
              "b_mo at the image corners with budget_falloff, where budget_map is 0")
         .uniform(),
-    stringParam("budget_map", "",
+    stringParam(kBudgetMap, "",
                 "budget map image (.png or .exr, relative to the scene file): its first channel "
                 "v in [0, 1], stretched over the image, sets b_mo = budget_edge + v (budget - "
                 "budget_edge)"),
-    boolParam("smooth", true,
+    boolParam(kSmooth, true,
               "bilateral-filter the fractional level and blend floor/ceiling levels (4.2)"),
-    intParam("smooth_radius", 6, 1, 32, "half width of the bilateral filter in pixels")
+    intParam(kSmoothRadius, 6, 1, 32, "half width of the bilateral filter in pixels")
         .uniform("u_radius"),
-    floatParam("depth_tolerance", 0.03, 0.0, 1.0,
+    floatParam(kDepthTolerance, 0.03, 0.0, 1.0,
                "relative view-depth step where the filter stops (a depth discontinuity)")
         .uniform(),
-    intParam("refine_steps", 4, 0, 16, "search-area refinements with the area's depth range")
+    intParam(kRefineSteps, 4, 0, 16, "search-area refinements with the area's depth range")
         .uniform(),
-    boolParam("grow_query", true,
+    boolParam(kGrowQuery, true,
               "grow depth-range queries to the budget level's texels (section 6, Fig. 7)")
         .uniform(),
-    floatParam("normal_offset", 1.5, 0.0, 16.0,
+    floatParam(kNormalOffset, 1.5, 0.0, 16.0,
                "receiver offset along its normal, in light-map texels (against acne)")
         .uniform(),
-    floatParam("depth_bias", 0.003, 0.0, 0.5,
+    floatParam(kDepthBias, 0.003, 0.0, 0.5,
                "a micro-occluder shadows a receiver only when nearer by this fraction of its "
                "depth")
         .uniform(),

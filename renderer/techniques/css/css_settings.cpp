@@ -11,16 +11,16 @@ namespace penumbra::techniques::css {
 
 CssSettings cssSettings(const Params& p) {
     CssSettings s;
-    s.order = p.getInt("order");
-    s.map_size = p.getInt("map_size");
+    s.order = p.get(kOrder);
+    s.map_size = p.get(kMapSize);
     s.filter = p.getEnum(kFilter);
-    s.max_aniso = p.getInt("max_aniso");
-    s.mip_taps = p.getInt("mip_taps");
-    s.search_steps = p.getInt("search_steps");
-    s.ring_scale = static_cast<float>(p.getFloat("ring_scale"));
-    s.ring_shift = static_cast<float>(p.getFloat("ring_shift"));
-    s.sharpen_a = static_cast<float>(p.getFloat("sharpen_a"));
-    s.sharpen_b = static_cast<float>(p.getFloat("sharpen_b"));
+    s.max_aniso = p.get(kMaxAniso);
+    s.mip_taps = p.get(kMipTaps);
+    s.search_steps = p.get(kSearchSteps);
+    s.ring_scale = static_cast<float>(p.get(kRingScale));
+    s.ring_shift = static_cast<float>(p.get(kRingShift));
+    s.sharpen_a = static_cast<float>(p.get(kSharpenA));
+    s.sharpen_b = static_cast<float>(p.get(kSharpenB));
     return s;
 }
 
@@ -39,9 +39,9 @@ CsmMaps::Filter filterFor(const CssSettings& s, const scene::RectLight& light) {
 }
 
 MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
-    const int map = p.getInt("map_size");
+    const int map = p.get(kMapSize);
     const auto m = static_cast<std::uint64_t>(map);
-    const int order = p.getInt("order");
+    const int order = p.get(kOrder);
     const auto layers = 2 * static_cast<std::uint64_t>((order + 1) / 2) + 1;
     const FilterChoice filter = p.getEnum(kFilter);
     const std::uint64_t basis = saturatingProduct({m, m, 16, layers});

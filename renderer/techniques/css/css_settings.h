@@ -10,6 +10,7 @@
 #include "renderer/scene/scene.h"
 #include "renderer/techniques/css/csm_maps.h"
 #include "renderer/techniques/environment_lights.h"
+#include "renderer/techniques/param_keys.h"
 
 namespace penumbra::techniques::css {
 
@@ -19,38 +20,46 @@ inline constexpr EnumKey<FilterChoice, 3> kFilter{"filter", {"sat", "mipmap", "a
 
 // ORDER, MAX_ANISO, MIP_TAPS and SEARCH_STEPS are the visibility program's #defines; the
 // environment's rows are environment_lights.h's.
+inline constexpr IntKey kOrder{"order"};
+inline constexpr IntKey kMaxAniso{"max_aniso"};
+inline constexpr IntKey kMipTaps{"mip_taps"};
+inline constexpr IntKey kSearchSteps{"search_steps"};
+inline constexpr FloatKey kRingScale{"ring_scale"};
+inline constexpr FloatKey kRingShift{"ring_shift"};
+inline constexpr FloatKey kSharpenA{"sharpen_a"};
+inline constexpr FloatKey kSharpenB{"sharpen_b"};
+
 inline constexpr std::array kCssParams = joinParams(
     std::array{
-        intParam("order", 4, 1, 16, "M: Fourier terms of the shadow-test expansion").define(),
-        intParam("map_size", 256, 16, 4096,
-                 "shadow map (and basis image) width and height in texels")
+        intParam(kOrder, 4, 1, 16, "M: Fourier terms of the shadow-test expansion").define(),
+        intParam(kMapSize, 256, 16, 4096, "shadow map (and basis image) width and height in texels")
             .limitedBy(GlLimit::MaxTextureSize),
         enumParam(kFilter, FilterChoice::Sat,
                   "prefilter: summed-area tables, mipmaps, or auto (the paper's choice: mipmaps "
                   "for square lights, SATs for rectangular ones)"),
-        intParam("max_aniso", 8, 1, 16,
+        intParam(kMaxAniso, 8, 1, 16,
                  "mipmap taps along the longer axis of a rectangular light's kernel (anisotropy)")
             .define(),
-        intParam("mip_taps", 2, 1, 4,
+        intParam(kMipTaps, 2, 1, 4,
                  "mipmap taps per side of a square kernel (1 = the paper's single trilinear "
                  "lookup)")
             .define(),
-        intParam("search_steps", 2, 0, 4,
+        intParam(kSearchSteps, 2, 0, 4,
                  "blocker searches after the first, each over the cone cut at the last z_avg (0 "
                  "= the paper's one search at the near plane)")
             .define(),
-        floatParam("ring_scale", 1.0, 0.5, 8.0,
+        floatParam(kRingScale, 1.0, 0.5, 8.0,
                    "ringing suppression: the filtered test is scaled by this about 1/2, then "
                    "clamped")
             .uniform(),
-        floatParam("ring_shift", 0.08, 0.0, 0.5,
+        floatParam(kRingShift, 0.08, 0.0, 0.5,
                    "ringing suppression: the test is evaluated this far (normalised depth) nearer "
                    "the light, so a surface does not shadow itself")
             .uniform(),
-        floatParam("sharpen_a", 30.0, 0.0, 1000.0,
+        floatParam(kSharpenA, 30.0, 0.0, 1000.0,
                    "contact sharpening strength A in v^p, p = 1 + A exp(-B (d - z_avg)); 0 = off")
             .uniform(),
-        floatParam("sharpen_b", 30.0, 0.0, 10000.0,
+        floatParam(kSharpenB, 30.0, 0.0, 10000.0,
                    "contact sharpening falloff B (per unit of normalised depth)")
             .uniform(),
     },

@@ -16,22 +16,26 @@
 #include "renderer/techniques/exact/environment_sampler.h"
 #include "renderer/techniques/exact/pixel_tracer.h"
 #include "renderer/techniques/exact/ray_scene.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/registry_entries.h"
 
 namespace penumbra::techniques {
 namespace {
 
+constexpr IntKey kThreads{"threads"};
+constexpr FloatKey kRayOffset{"ray_offset"};
+
 constexpr std::array kExactParams = {
-    intParam("samples", 16, 1, 64,
+    intParam(kSamples, 16, 1, 64,
              "N: N x N stratified jittered points on the light per pixel, "
              "one shadow ray each"),
-    boolParam("jitter", true, "jitter each point inside its stratum, per pixel (false: centres)"),
-    intParam("seed", 1, 0, 1 << 30, "seed of the jitter"),
-    intParam("threads", 0, 0, 256, "ray-casting threads (0: one per core)"),
-    floatParam("ray_offset", 1e-5, 0.0, 1e-2,
+    boolParam(kJitter, true, "jitter each point inside its stratum, per pixel (false: centres)"),
+    intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter"),
+    intParam(kThreads, 0, 0, 256, "ray-casting threads (0: one per core)"),
+    floatParam(kRayOffset, 1e-5, 0.0, 1e-2,
                "a shadow ray starts this far from its point, as a share of the casters' "
                "bounding diagonal (skips the point's own surface; no shadow-map bias)"),
-    intParam("env_samples", 256, 2, 4096,
+    intParam(kEnvSamples, 256, 2, 4096,
              "environment: shadow rays per pixel, half toward directions drawn by the map's "
              "luminance, half by the cosine, combined by multiple importance sampling"),
 };
@@ -41,12 +45,12 @@ using Clock = std::chrono::steady_clock;
 class Exact final : public Technique {
 public:
     explicit Exact(const Params& p)
-        : n_(p.getInt("samples")),
-          jitter_(p.getBool("jitter")),
-          seed_(static_cast<std::uint32_t>(p.getInt("seed"))),
-          offset_(static_cast<float>(p.getFloat("ray_offset"))),
-          env_samples_(p.getInt("env_samples")) {
-        const int t = p.getInt("threads");
+        : n_(p.get(kSamples)),
+          jitter_(p.get(kJitter)),
+          seed_(static_cast<std::uint32_t>(p.get(kSeed))),
+          offset_(static_cast<float>(p.get(kRayOffset))),
+          env_samples_(p.get(kEnvSamples)) {
+        const int t = p.get(kThreads);
         threads_ = t > 0 ? t : int(std::max(1u, std::thread::hardware_concurrency()));
     }
 

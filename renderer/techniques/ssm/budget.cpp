@@ -10,11 +10,11 @@ namespace penumbra::techniques::ssm {
 
 MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     using u64 = std::uint64_t;
-    const int ssm = p.getInt("ssm_size");
-    const auto m = static_cast<u64>(p.getInt("map_size"));
+    const int ssm = p.get(kSsmSize);
+    const auto m = static_cast<u64>(p.get(kMapSize));
     const auto s = static_cast<u64>(ssm);
-    const u64 sides = p.getBool("two_sided") ? 2 : 1;
-    const auto layers = static_cast<u64>(p.getInt("layers"));
+    const u64 sides = p.get(kTwoSided) ? 2 : 1;
+    const auto layers = static_cast<u64>(p.get(kLayers));
     MemoryTerms out;
     out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
                    saturatingProduct({m, m, 4 + 4 + 8, sides})});
@@ -28,8 +28,8 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
 }
 
 std::string splatLimitError(const Params& p) {
-    const auto map = static_cast<std::uint64_t>(p.getInt("map_size"));
-    const auto ssm = static_cast<std::uint64_t>(p.getInt("ssm_size"));
+    const auto map = static_cast<std::uint64_t>(p.get(kMapSize));
+    const auto ssm = static_cast<std::uint64_t>(p.get(kSsmSize));
     if (map * ssm <= kMaxSplatProduct) return {};
     return "technique.ssm_size: map_size x ssm_size = " + std::to_string(map) + " x " +
            std::to_string(ssm) + " exceeds the splat-work bound of " +

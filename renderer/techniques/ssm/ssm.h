@@ -14,6 +14,7 @@
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/passes/light_windows.h"
+#include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/ssm/micro_patches.h"
 #include "renderer/techniques/ssm/targets.h"
 #include "renderer/techniques/technique.h"
@@ -27,27 +28,32 @@ enum class PatchPath { Gpu, Cpu };
 inline constexpr EnumKey<Precision, 2> kPrecision{"precision", {"fp32", "fp16"}};
 inline constexpr EnumKey<PatchPath, 2> kPath{"path", {"gpu", "cpu"}};
 
+inline constexpr IntKey kSsmSize{"ssm_size"};
+inline constexpr BoolKey kTwoSided{"two_sided"};
+inline constexpr BoolKey kClip{"clip"};
+inline constexpr IntKey kLayers{"layers"};
+
 inline constexpr std::array kSsmParams = {
-    intParam("map_size", 256, 16, 4096, "occluder map width and height in texels")
+    intParam(kMapSize, 256, 16, 4096, "occluder map width and height in texels")
         .uniform()
         .limitedBy(GlLimit::MaxTextureSize),
-    intParam("ssm_size", 256, 16, 4096, "soft shadow map (and receiver map) width and height")
+    intParam(kSsmSize, 256, 16, 4096, "soft shadow map (and receiver map) width and height")
         .uniform("u_ssm_res")
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
-    boolParam("two_sided", false,
+    boolParam(kTwoSided, false,
               "also splat the farthest (back) occluder surfaces into a second map, merged by max")
         .define(),
     enumParam(kPath, PatchPath::Gpu,
               "gpu: micro-patch list compacted on the GPU, drawn indirect; cpu: read back (4.1)"),
-    boolParam("clip", true,
+    boolParam(kClip, true,
               "fit each penumbra quad to the farthest receiver under it, and cull it when none")
         .define(),
-    floatParam("depth_bias", 0.002, 0.0, 0.5,
+    floatParam(kDepthBias, 0.002, 0.0, 0.5,
                "a micro-patch shadows a receiver only when nearer by this fraction of its depth")
         .uniform(),
-    intParam("layers", 4, 1, 8,
+    intParam(kLayers, 4, 1, 8,
              "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
              "the paper: objects of role both occlude only and the receivers are the "
              "role-receiver objects"),
@@ -71,14 +77,14 @@ class Ssm final : public Technique {
 public:
     explicit Ssm(const Params& p)
         : params_(p),
-          map_size_(p.getInt("map_size")),
-          ssm_size_(p.getInt("ssm_size")),
+          map_size_(p.get(kMapSize)),
+          ssm_size_(p.get(kSsmSize)),
           fp16_(p.getEnum(kPrecision) == Precision::Fp16),
-          two_sided_(p.getBool("two_sided")),
+          two_sided_(p.get(kTwoSided)),
           cpu_path_(p.getEnum(kPath) == PatchPath::Cpu),
-          clip_(p.getBool("clip")),
-          depth_bias_(static_cast<float>(p.getFloat("depth_bias"))),
-          layers_(p.getInt("layers")) {}
+          clip_(p.get(kClip)),
+          depth_bias_(static_cast<float>(p.get(kDepthBias))),
+          layers_(p.get(kLayers)) {}
 
     // The receivers: with one layer (the paper) the role-receiver objects only.
     bool receives(scene::ShadowRole role) const {

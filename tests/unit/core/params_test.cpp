@@ -14,9 +14,9 @@ enum class Mode { Absolute, Relative };
 constexpr penumbra::EnumKey<Mode, 2> kMode{"mode", {"absolute", "relative"}};
 
 constexpr std::array kSpecs = {
-    penumbra::intParam("samples", 16, 1, 32, "grid size"),
-    penumbra::floatParam("epsilon", 0.01, 0.0, 1.0, "threshold"),
-    penumbra::boolParam("jitter", true, "jitter"),
+    penumbra::intParam({"samples"}, 16, 1, 32, "grid size"),
+    penumbra::floatParam({"epsilon"}, 0.01, 0.0, 1.0, "threshold"),
+    penumbra::boolParam({"jitter"}, true, "jitter"),
     penumbra::enumParam(kMode, Mode::Absolute, "comparison"),
 };
 
@@ -86,7 +86,7 @@ TEST(Params, SpecJson) {
 }
 
 TEST(Params, StringParameters) {
-    constexpr std::array kText = {penumbra::stringParam("file", "", "a path")};
+    constexpr std::array kText = {penumbra::stringParam({"file"}, "", "a path")};
     auto p = penumbra::resolveParams(kText, nlohmann::json::object(), "s.json: technique");
     EXPECT_EQ(p.getString("file"), "");
     p = penumbra::resolveParams(kText, {{"file", "lights.json"}}, "s.json: technique");
@@ -135,10 +135,10 @@ TEST(Params, EnumChoicesMustBeDistinctAndNamed) {
 // in `techniques --json`.
 TEST(Params, GpuRouteAndLimit) {
     constexpr std::array kRouted = {
-        penumbra::intParam("budget", 12, 0, 64, "b").uniform(),
-        penumbra::intParam("smooth_radius", 6, 1, 32, "r").uniform("u_radius"),
-        penumbra::intParam("max_aniso", 8, 1, 16, "a").define(),
-        penumbra::intParam("map_size", 256, 16, 4096, "m")
+        penumbra::intParam({"budget"}, 12, 0, 64, "b").uniform(),
+        penumbra::intParam({"smooth_radius"}, 6, 1, 32, "r").uniform("u_radius"),
+        penumbra::intParam({"max_aniso"}, 8, 1, 16, "a").define(),
+        penumbra::intParam({"map_size"}, 256, 16, 4096, "m")
             .limitedBy(penumbra::GlLimit::MaxTextureSize),
     };
     EXPECT_EQ(penumbra::paramGpuName(kRouted[0]), "u_budget");
@@ -157,8 +157,8 @@ TEST(Params, GpuRouteAndLimit) {
 }
 
 TEST(Params, JoinedTablesKeepTheirOrder) {
-    constexpr std::array kA = {penumbra::intParam("a", 1, 0, 2, "a")};
-    constexpr std::array kB = {penumbra::boolParam("b", true, "b"),
+    constexpr std::array kA = {penumbra::intParam({"a"}, 1, 0, 2, "a")};
+    constexpr std::array kB = {penumbra::boolParam({"b"}, true, "b"),
                                penumbra::enumParam(kMode, Mode::Relative, "m")};
     constexpr auto kJoined = penumbra::joinParams(kA, kB);
     static_assert(kJoined.size() == 3);
