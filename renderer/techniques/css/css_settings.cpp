@@ -19,6 +19,7 @@ CssSettings cssSettings(const Params& p) {
     s.ring_shift = static_cast<float>(p.getFloat("ring_shift"));
     s.sharpen_a = static_cast<float>(p.getFloat("sharpen_a"));
     s.sharpen_b = static_cast<float>(p.getFloat("sharpen_b"));
+    s.self_exclude = static_cast<float>(p.getFloat("self_exclude"));
     return s;
 }
 

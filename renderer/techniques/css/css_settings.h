@@ -51,6 +51,11 @@ inline constexpr std::array kCssParams = joinParams(
         floatParam("sharpen_b", 30.0, 0.0, 10000.0,
                    "contact sharpening falloff B (per unit of normalised depth)")
             .uniform(),
+        floatParam("self_exclude", 0.25, 0.0, 1.0,
+                   "a receiver that casts is tested this share of each kernel's half-width "
+                   "nearer the light along its own tangent plane, so its own surface is not its "
+                   "blocker (0 = off, 1 = the whole kernel)")
+            .uniform(),
     },
     kFittedEnvironmentParams);
 
@@ -64,6 +69,7 @@ struct CssSettings {
     int search_steps = 2;
     float ring_scale = 1.0f, ring_shift = 0.08f;
     float sharpen_a = 30.0f, sharpen_b = 30.0f;
+    float self_exclude = 0.25f;
 };
 
 CssSettings cssSettings(const Params& params);
