@@ -152,18 +152,12 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
 // The series weights of the shifted receiver depth DS (cssWeights per layer pair) and the test
 // of an empty texel, fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k
 // = 1/2 - 2 sum_k sin(c_k ds) / c_k (sin(c_k (x - 1)) = -sin(c_k x) for odd multiples of pi).
-struct Series {
-    vec4 w[CSS_PAIRS];
-    float empty;
-};
-Series seriesAt(float ds) {
-    Series s;
-    s.empty = 0.5;
+void seriesAt(float ds, out vec4 w[CSS_PAIRS], out float empty) {
+    empty = 0.5;
     for (int i = 0; i < CSS_PAIRS; ++i) {
-        s.w[i] = cssWeights(i, ds);
-        s.empty -= 2.0 * (s.w[i].x + s.w[i].z);
+        w[i] = cssWeights(i, ds);
+        empty -= 2.0 * (w[i].x + w[i].z);
     }
-    return s;
 }
 
 // The receiver's own surface in the map (an object that casts): how far its tangent plane
@@ -176,13 +170,11 @@ Series seriesAt(float ds) {
 // so the receiver (and a convex object around it) does not count as its own blocker: what it
 // hides of the light is the horizon rule's share, counted once.
 float planeDrop(vec3 l, vec3 n, vec2 u, vec2 h) {
-    float k = dot(n, l), nearest = l.z;
-    for (int i = 0; i < 4; ++i) {
-        vec2 corner = u + h * vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0);
-        float den = dot(n, vec3(corner, 1.0));
-        if (den * k <= 0.0) return 1.0;  // edge-on: the plane reaches the light
-        nearest = min(nearest, k / den);
-    }
+    // Over the box, sign(k) N.(u, v, 1) spans centre +- spread; the nearest depth is |k| over
+    // its largest value, unless its smallest is not positive (the plane seen edge-on).
+    float k = dot(n, l), centre = dot(n, vec3(u, 1.0)) * sign(k);
+    float spread = dot(abs(n.xy), h);
+    float nearest = centre - spread > 0.0 ? abs(k) / (centre + spread) : 0.0;
     return (l.z - nearest) / (u_depth_far - u_depth_near);
 }
 
@@ -231,9 +223,10 @@ void main() {
     if (z_coverage.y <= 1e-6) return;
 
     // The searches share the widest kernel's test depth (its drop is the largest).
-    float d0 = TEST_DEPTH(w0);
-    Series sr = seriesAt(d0);
-    vec2 search = filteredTestWith(k0, sr.w, sr.empty, true, z_coverage);
+    vec4 w[CSS_PAIRS];
+    float empty;
+    seriesAt(TEST_DEPTH(w0), w, empty);
+    vec2 search = filteredTestWith(k0, w, empty, true, z_coverage);
     if (search.x < 1e-3) return;  // no blocker in the search area
     // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
     // cone cut at the plane of the current z_avg instead of the near plane (the paper's
@@ -242,7 +235,7 @@ void main() {
     float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     for (int i = 0; i < SEARCH_STEPS; ++i) {
         vec2 ws = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS, true), sr.w, sr.empty, true);
+        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS, true), w, empty, true);
         if (refined.x < 1e-3) break;  // keep the last estimate
         z_avg = clamp(refined.y / refined.x, 0.0, d);
         zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
@@ -251,9 +244,8 @@ void main() {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-    float d1 = TEST_DEPTH(w1);
-    if (d1 != d0) sr = seriesAt(d1);
-    float f = filteredTest(makeKernel(c, w1, MIP_TAPS, false), sr.w, sr.empty, false).x;
+    if (exclude) seriesAt(TEST_DEPTH(w1), w, empty);
+    float f = filteredTest(makeKernel(c, w1, MIP_TAPS, false), w, empty, false).x;
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
     o_visibility = vec4(horizon * pow(1.0 - s, p), 0.0, 0.0, 0.0);
