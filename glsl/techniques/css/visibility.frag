@@ -6,6 +6,8 @@
 //  3. the final kernel D (d - z_avg) / (d z_avg) (PCSS), and the filtered complementary test
 //     there, with ringing suppression (scale about 1/2, shift, clamp) and contact sharpening
 //     v^p, p = 1 + A exp(-B (d - z_avg)).
+// A receiver that casts is in the map itself: each kernel tests it nearer the light by the drop
+// of its own tangent plane over part of the kernel (planeDrop), so it is not its own blocker.
 // Diagnostics: colour 1 = z_avg (normalised depth; 0 where no blocker), colour 2 = the final
 // kernel's width in shadow-map texels along its wider axis.
 #include "techniques/css/bindings.glsl"
@@ -50,6 +52,7 @@ uniform float u_ring_scale;  // ringing suppression: s = clamp(scale (F - 1/2) +
 uniform float u_ring_shift;  // the test is evaluated at d - shift
 uniform float u_sharpen_a;   // contact sharpening v^p, p = 1 + A exp(-B (d - z_avg))
 uniform float u_sharpen_b;
+uniform float u_self_exclude;  // share of a kernel's half-width for the receiver's own plane
 
 layout(location = 0) out vec4 o_visibility;
 layout(location = 1) out vec4 o_z_avg;
@@ -120,7 +123,7 @@ vec4 cssWeights(int i, float ds) {
 }
 
 // The filtered complementary test fbar (1 = blocked) over kernel K, given the series weights
-// W of the shifted receiver depth (cssWeights, the same for every kernel of a pixel) and
+// W of the shifted receiver depth (cssWeights; seriesAt) and
 // EMPTY = fbar(ds, 1), the test of an empty texel; and, when WITH_Z, the filtered fbar z
 // (CSM-Z). The basis is stored minus its empty-texel value, so the series sums give
 // sum_i w_i (fbar(d, z_i) - EMPTY) over the kernel; adding EMPTY back for the covered texels
@@ -146,6 +149,35 @@ vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
     return filteredTestWith(k, w, empty, with_z, boxMean(k, 2 * CSS_PAIRS).xy);  // mean of (z - 1), coverage
 }
 
+// The series weights of the shifted receiver depth DS (cssWeights per layer pair) and the test
+// of an empty texel, fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k
+// = 1/2 - 2 sum_k sin(c_k ds) / c_k (sin(c_k (x - 1)) = -sin(c_k x) for odd multiples of pi).
+void seriesAt(float ds, out vec4 w[CSS_PAIRS], out float empty) {
+    empty = 0.5;
+    for (int i = 0; i < CSS_PAIRS; ++i) {
+        w[i] = cssWeights(i, ds);
+        empty -= 2.0 * (w[i].x + w[i].z);
+    }
+}
+
+// The receiver's own surface in the map (an object that casts): how far its tangent plane
+// comes nearer the light than the receiver anywhere under a kernel of half-size H (tangent
+// units) centred at direction U (tangent units), in normalised depth. The plane through the
+// receiver (light-frame offset L, normal N) meets the ray (u, v, 1) at depth
+// (N.L) / (N.(u, v, 1)), a linear-fractional function whose minimum over a box lies at a
+// corner; a plane seen edge-on inside the kernel reaches the light, so it can come as near as
+// depth 0. Every texel of the kernel is tested against the receiver's depth less this drop,
+// so the receiver (and a convex object around it) does not count as its own blocker: what it
+// hides of the light is the horizon rule's share, counted once.
+float planeDrop(vec3 l, vec3 n, vec2 u, vec2 h) {
+    // Over the box, sign(k) N.(u, v, 1) spans centre +- spread; the nearest depth is |k| over
+    // its largest value, unless its smallest is not positive (the plane seen edge-on).
+    float k = dot(n, l), centre = dot(n, vec3(u, 1.0)) * sign(k);
+    float spread = dot(abs(n.xy), h);
+    float nearest = centre - spread > 0.0 ? abs(k) / (centre + spread) : 0.0;
+    return (l.z - nearest) / (u_depth_far - u_depth_near);
+}
+
 // The fraction of the light above the tangent plane of receiver P (normal N): the part below
 // is hidden by the receiver's own surface, as every light-sample shadow map sees it for a
 // closed object that casts (common/light_horizon.glsl). Objects that cast no shadow do not
@@ -164,16 +196,24 @@ void main() {
     o_filter_width = vec4(0.0);
     vec3 dl = pos.xyz - u_light_centre;
     float zw = dot(dl, u_light_forward);
-    float horizon = objectCasts(texelFetch(u_id, pix, 0).r)
-                        ? aboveHorizon(pos.xyz, geometricNormal(pix))
-                        : 1.0;
+    bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
+    vec3 normal = casts ? geometricNormal(pix) : vec3(0.0);
+    float horizon = casts ? aboveHorizon(pos.xyz, normal) : 1.0;
     o_visibility = vec4(horizon, 0.0, 0.0, 0.0);
     if (zw <= u_near || horizon == 0.0) return;  // nearer than every caster, or facing away
+    vec3 l = vec3(dot(dl, u_light_right), dot(dl, u_light_up), zw);  // the light's frame
+    vec3 nl = vec3(dot(normal, u_light_right), dot(normal, u_light_up),
+                   dot(normal, u_light_forward));
     vec2 texels_per_tan = u_map_size / u_window_size;
-    vec2 c = ((vec2(dot(dl, u_light_right), dot(dl, u_light_up)) / zw) - u_window_lo) *
-             texels_per_tan;
+    vec2 u = l.xy / zw;
+    vec2 c = (u - u_window_lo) * texels_per_tan;
     float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
     float ds = max(d - u_ring_shift, 0.0);
+    // The test depth under a kernel of S texels: ds, less the drop of the receiver's own
+    // plane over u_self_exclude of the kernel's half-width when the receiver is in the map.
+    bool exclude = casts && u_self_exclude > 0.0;
+    vec2 half_tan = 0.5 * u_self_exclude / texels_per_tan;
+#define TEST_DEPTH(S) (exclude ? max(ds - planeDrop(l, nl, u, half_tan * (S)), 0.0) : ds)
 
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
@@ -182,15 +222,10 @@ void main() {
     vec2 z_coverage = boxMean(k0, 2 * CSS_PAIRS).xy;
     if (z_coverage.y <= 1e-6) return;
 
-    // The series weights of ds, once per pixel: every kernel below uses them.
-    // fbar(ds, 1) = 1/2 + 2 sum_k sin(c_k (ds - 1)) / c_k = 1/2 - 2 sum_k sin(c_k ds) / c_k,
-    // since sin(c_k (x - 1)) = -sin(c_k x) for odd multiples c_k of pi.
+    // The searches share the widest kernel's test depth (its drop is the largest).
     vec4 w[CSS_PAIRS];
-    float empty = 0.5;
-    for (int i = 0; i < CSS_PAIRS; ++i) {
-        w[i] = cssWeights(i, ds);
-        empty -= 2.0 * (w[i].x + w[i].z);
-    }
+    float empty;
+    seriesAt(TEST_DEPTH(w0), w, empty);
     vec2 search = filteredTestWith(k0, w, empty, true, z_coverage);
     if (search.x < 1e-3) return;  // no blocker in the search area
     // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
@@ -209,6 +244,7 @@ void main() {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
+    if (exclude) seriesAt(TEST_DEPTH(w1), w, empty);
     float f = filteredTest(makeKernel(c, w1, MIP_TAPS, false), w, empty, false).x;
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));

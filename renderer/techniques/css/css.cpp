@@ -105,7 +105,7 @@ private:
         gl::setUniform(p, "u_depth_near", range.near);
         gl::setUniform(p, "u_depth_far", range.far);
         gl::setUniform(p, "u_map_size", static_cast<float>(settings_.map_size));
-        gl::setParamUniforms(p, css::kCssParams, params_);  // ring_*, sharpen_*
+        gl::setParamUniforms(p, css::kCssParams, params_);  // ring_*, sharpen_*, self_exclude
         fullscreen_.draw();
         glBindSampler(CSS_UNIT_VISIBILITY_BASIS_SEARCH, 0);
         glUseProgram(0);

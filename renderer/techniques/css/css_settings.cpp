@@ -21,6 +21,7 @@ CssSettings cssSettings(const Params& p) {
     s.ring_shift = static_cast<float>(p.get(kRingShift));
     s.sharpen_a = static_cast<float>(p.get(kSharpenA));
     s.sharpen_b = static_cast<float>(p.get(kSharpenB));
+    s.self_exclude = static_cast<float>(p.get(kSelfExclude));
     return s;
 }
 

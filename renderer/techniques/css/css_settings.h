@@ -28,6 +28,7 @@ inline constexpr FloatKey kRingScale{"ring_scale"};
 inline constexpr FloatKey kRingShift{"ring_shift"};
 inline constexpr FloatKey kSharpenA{"sharpen_a"};
 inline constexpr FloatKey kSharpenB{"sharpen_b"};
+inline constexpr FloatKey kSelfExclude{"self_exclude"};
 
 inline constexpr std::array kCssParams = joinParams(
     std::array{
@@ -62,6 +63,11 @@ inline constexpr std::array kCssParams = joinParams(
         floatParam(kSharpenB, 30.0, 0.0, 10000.0,
                    "contact sharpening falloff B (per unit of normalised depth)")
             .uniform(),
+        floatParam(kSelfExclude, 0.25, 0.0, 1.0,
+                   "a receiver that casts is tested this share of each kernel's half-width "
+                   "nearer the light along its own tangent plane, so its own surface is not its "
+                   "blocker (0 = off, 1 = the whole kernel)")
+            .uniform(),
     },
     kFittedEnvironmentParams);
 
@@ -75,6 +81,7 @@ struct CssSettings {
     int search_steps = 2;
     float ring_scale = 1.0f, ring_shift = 0.08f;
     float sharpen_a = 30.0f, sharpen_b = 30.0f;
+    float self_exclude = 0.25f;
 };
 
 CssSettings cssSettings(const Params& params);

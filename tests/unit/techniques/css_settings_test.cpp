@@ -22,12 +22,14 @@ TEST(CssSettings, DefaultsAndOverrides) {
     EXPECT_EQ(s.order, 4);
     EXPECT_EQ(s.map_size, 256);
     EXPECT_EQ(s.filter, techniques::css::CssSettings::FilterChoice::Sat);
+    EXPECT_EQ(s.self_exclude, 0.25f);
     s = settingsOf({{"name", "css"}, {"order", 16}, {"filter", "auto"}, {"sharpen_a", 0.0}});
     EXPECT_EQ(s.order, 16);
     EXPECT_EQ(s.filter, techniques::css::CssSettings::FilterChoice::Auto);
     EXPECT_EQ(s.sharpen_a, 0.0f);
     EXPECT_THROW(settingsOf({{"name", "css"}, {"order", 17}}), InputError);
     EXPECT_THROW(settingsOf({{"name", "css"}, {"filter", "box"}}), InputError);
+    EXPECT_THROW(settingsOf({{"name", "css"}, {"self_exclude", 1.5}}), InputError);
 }
 
 TEST(CssSettings, AutoFilterFollowsTheLightsShape) {
