@@ -96,7 +96,7 @@ void techniqueTerms(std::string_view t, const Params& p, u64 pixels, std::vector
 }  // namespace
 
 std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view technique,
-                                       const Params& params) {
+                                       const Params& params, int frames_in_flight) {
     const u64 pixels = product({static_cast<u64>(s.image.width), static_cast<u64>(s.image.height)});
     const u64 lights = std::max<u64>(1, s.lights.size());
     std::vector<MemoryTerm> out;
@@ -107,7 +107,12 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view t
     out.push_back({"image.width", "the G-buffer and shading targets", product({pixels, 40 + 20})});
     out.push_back({"image.width", "the visibility layers", product({pixels, lights, 16}), true});
     out.push_back({"image.width", "the diagnostic layers", product({pixels, lights, 16})});
-    out.push_back({"image.width", "the readback and the EXR image", product({pixels, 2 * 17 * 4})});
+    const u64 in_flight = static_cast<u64>(std::max(frames_in_flight, 1));
+    out.push_back({"image.width",
+                   in_flight > 1 ? "the readbacks and EXR images of " + std::to_string(in_flight) +
+                                       " frames in flight"
+                                 : "the readback and the EXR image",
+                   product({pixels, in_flight, 2 * 17 * 4})});
     if (s.image.samples > 1) {
         const u64 samples = static_cast<u64>(s.image.samples);
         out.push_back({"image.samples",
@@ -121,7 +126,7 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view t
 }
 
 void checkMemoryBudget(const scene::Scene& s, std::string_view technique, const Params& params,
-                       const gl::ContextInfo* gl) {
+                       const gl::ContextInfo* gl, int frames_in_flight) {
     const std::string where = s.path.string() + ": ";
     if (technique == "ssm") {
         const u64 map = static_cast<u64>(intOr(params, "map_size", 0));
@@ -132,7 +137,7 @@ void checkMemoryBudget(const scene::Scene& s, std::string_view technique, const 
                              " x " + std::to_string(ssm) + " exceeds the splat-work bound of " +
                              std::to_string(kMaxSsmSplatProduct) + " (2^21)");
     }
-    const std::vector<MemoryTerm> terms = estimateMemory(s, technique, params);
+    const std::vector<MemoryTerm> terms = estimateMemory(s, technique, params, frames_in_flight);
     u64 total = 0;
     const MemoryTerm* largest = nullptr;
     for (const MemoryTerm& t : terms) {

@@ -31,14 +31,15 @@ struct MemoryTerm {
 };
 
 // The terms for S rendered with TECHNIQUE and its resolved PARAMS (approximate: the largest
-// buffers, not every small one).
+// buffers, not every small one). FRAMES_IN_FLIGHT: frames whose readback or image is alive at
+// once (a sequence reads one back and writes another while the next renders).
 std::vector<MemoryTerm> estimateMemory(const scene::Scene& s, std::string_view technique,
-                                       const Params& params);
+                                       const Params& params, int frames_in_flight = 1);
 
 // Throws InputError("<scene>: <key>: ...") when the estimate exceeds the memory limit (naming
 // the largest term's key), a texture exceeds GL's size limit or llvmpipe's per-texture limit
 // (GL given), or ssm's splat work exceeds kMaxSsmSplatProduct. GL may be null (no context yet).
 void checkMemoryBudget(const scene::Scene& s, std::string_view technique, const Params& params,
-                       const gl::ContextInfo* gl);
+                       const gl::ContextInfo* gl, int frames_in_flight = 1);
 
 }  // namespace penumbra::app
