@@ -8,6 +8,7 @@ cache (a private cache folder under the bench's output folder).
 """
 import json
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -37,16 +38,22 @@ def stretched_walk(out, frames):
     return path
 
 
+def cpu_seconds():
+    """User and system CPU time of the finished children so far."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def sequence(b, scene, frames, env, tag):
     """One process rendering FRAMES frames of SCENE: (wall s, per-frame pass sums, readbacks,
-    ms to first pass)."""
+    ms to first pass, CPU s of the process)."""
     folder = os.path.join(b.out, f"frames_{tag}")
     shutil.rmtree(folder, ignore_errors=True)
     cmd = [b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f", f"1-{frames}", "-o",
            os.path.join(folder, "f.####.exr"), "--quiet"]
-    start = time.monotonic()
+    start, cpu = time.monotonic(), cpu_seconds()
     subprocess.run(cmd, check=True, env=env)
-    wall = time.monotonic() - start
+    wall, cpu = time.monotonic() - start, cpu_seconds() - cpu
     passes, readbacks, first = [], [], None
     for i in range(1, frames + 1):
         with open(os.path.join(folder, f"f.{i:04d}.json"), encoding="utf-8") as f:
@@ -55,7 +62,7 @@ def sequence(b, scene, frames, env, tag):
         readbacks.append(sum(p["ms"] for p in t["passes"] if p["name"] == "readback"))
         first = t.get("process", {}).get("ms_to_first_pass", first)
     shutil.rmtree(folder, ignore_errors=True)  # 240 frames at 1024x768 are about 2 GB
-    return wall, passes, readbacks, first
+    return wall, passes, readbacks, first, cpu
 
 
 def frames(b):
@@ -65,17 +72,26 @@ def frames(b):
     base = dict(os.environ, XDG_CACHE_HOME=cache)
     print(f"\nframes: {n} frames of `hard` on scenes/walk.json's animation, one process, "
           f"median of {b.repeat} (goal: wall per frame <= 1.3x the sum of the passes)")
-    print(f"{'run':<22}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'readback ms':>13}"
-          f"{'to 1st pass ms':>16}")
-    for label, extra in (("pipelined writes", {}), ("serial writes", {"PENUMBRA_SERIAL_WRITES": "1"})):
-        rows = []
-        for r in range(b.repeat):
-            wall, passes, readbacks, first = sequence(b, scene, n, dict(base, **extra), label[:4])
-            rows.append((wall * 1e3 / n, statistics.mean(passes), statistics.mean(readbacks),
-                         first if first is not None else float("nan")))
-        per_frame, passes, readback, first = (statistics.median(c) for c in zip(*rows))
-        print(f"{label:<22}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
-              f"{readback:>13.1f}{first:>16.1f}")
+    print("(ratio: wall per frame / its own passes; vs serial: / the serial runs' passes, since "
+          "on few cores the writer's work slows the passes it overlaps; cpu: the process's CPU "
+          "time per frame)")
+    print(f"{'run':<20}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
+          f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}")
+    modes = (("serial writes", {"PENUMBRA_SERIAL_WRITES": "1"}), ("pipelined writes", {}))
+    rows = {label: [] for label, _ in modes}
+    for r in range(b.repeat):  # alternated, so both see the same machine
+        for label, extra in modes:
+            wall, passes, readbacks, first, cpu = sequence(b, scene, n, dict(base, **extra),
+                                                           label[:4])
+            rows[label].append((wall * 1e3 / n, statistics.mean(passes),
+                                statistics.mean(readbacks), cpu * 1e3 / n,
+                                first if first is not None else float("nan")))
+    serial_passes = statistics.median(row[1] for row in rows["serial writes"])
+    for label, _ in modes:
+        per_frame, passes, readback, cpu, first = (statistics.median(c)
+                                                   for c in zip(*rows[label]))
+        print(f"{label:<20}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
+              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}")
     # Time to first pass: a one-frame render, cold cache (emptied first) and warm, and with the
     # cache off.
     for label, extra, empty in (("cold program cache", {}, True), ("warm program cache", {}, False),
@@ -85,4 +101,5 @@ def frames(b):
             if empty:
                 shutil.rmtree(cache, ignore_errors=True)
             firsts.append(sequence(b, scene, 1, dict(base, **extra), "first")[3])
-        print(f"{label:<22}{'':>14}{'':>11}{'':>7}{'':>13}{statistics.median(firsts):>16.1f}")
+        print(f"{label:<20}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
+              f"{statistics.median(firsts):>16.1f}")

@@ -85,8 +85,7 @@ struct JobFrames {
     const double& ms_to_first_pass;  // from the process's start; -1 until the first pass
 };
 
-// The timing report of R: passes in first-run order with one figure per timed run, then the
-// readback.
+// The timing report of R: passes in first-run order with one figure per timed run.
 output::FrameReport timingReport(const frame::RenderedFrame& r, const char* clock) {
     output::FrameReport report;
     std::map<std::string, size_t> pass_index;
@@ -98,8 +97,7 @@ output::FrameReport timingReport(const frame::RenderedFrame& r, const char* cloc
             report.passes[it->second].ms.push_back(t.ms);
         }
     }
-    report.passes.push_back({"readback", "cpu", {r.readback_ms}});
-    return report;
+    return report;  // the readback is added when it is done (handOver)
 }
 
 // The render job's header attributes after renderFrame's: scene, backend, frame, samples,
@@ -125,22 +123,15 @@ struct RenderedPlan {
     const FramePlan* plan;
     scene::Scene scene;
     frame::RenderedFrame rendered;
+    output::FrameReport report;  // all but the readback's time
 };
 
-// Renders PLAN's frame; its readback is left running. Throws RuntimeError.
-RenderedPlan renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
-    scene::Scene s = job.in.source.at(plan.frame);
-    frame::RenderedFrame r = frame::renderFrameDeferred(job.renderer, s, resolveFor(job.in.info, s),
-                                                        job.timer, job.req.runs);
-    return {&plan, std::move(s), std::move(r)};
-}
-
-// The timing report of P's frame.
-output::FrameReport frameReport(const JobFrames& job, const RenderedPlan& p) {
-    const frame::RenderedFrame& r = p.rendered;
+// The timing report of a frame just rendered (the renderer's parameters are still its own).
+output::FrameReport frameReport(const JobFrames& job, const FramePlan& plan,
+                                const frame::RenderedFrame& r) {
     output::FrameReport report = timingReport(r, job.timer.clockName());
     report.scene = job.scene_name;
-    report.frame = p.plan->frame;
+    report.frame = plan.frame;
     report.technique = std::string(job.in.info.name);
     report.params = job.renderer.params().json();
     report.backend = job.backend;
@@ -155,9 +146,18 @@ output::FrameReport frameReport(const JobFrames& job, const RenderedPlan& p) {
     report.stats = r.stats;
     report.stats["triangles"] = job.renderer.gpuScene().triangleCount();
     report.stats["lights"] = job.renderer.lightCount();
-    report.output = {{"exr", p.plan->exr}};
-    if (!p.plan->preview.empty()) report.output["preview"] = p.plan->preview;
+    report.output = {{"exr", plan.exr}};
+    if (!plan.preview.empty()) report.output["preview"] = plan.preview;
     return report;
+}
+
+// Renders PLAN's frame; its readback is left running. Throws RuntimeError.
+RenderedPlan renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
+    scene::Scene s = job.in.source.at(plan.frame);
+    frame::RenderedFrame r = frame::renderFrameDeferred(job.renderer, s, resolveFor(job.in.info, s),
+                                                        job.timer, job.req.runs);
+    output::FrameReport report = frameReport(job, plan, r);
+    return {&plan, std::move(s), std::move(r), std::move(report)};
 }
 
 // Waits for P's readback (GL thread), then hands WRITER the rest: the image assembled, its
@@ -167,12 +167,12 @@ void handOver(const JobFrames& job, FrameWriter& writer, RenderedPlan&& p) {
     p.rendered.readback.wait();
     p.rendered.readback_ms +=
         std::chrono::duration<double, std::milli>(Clock::now() - wait_start).count();
-    auto report = std::make_shared<output::FrameReport>(frameReport(job, p));
+    p.report.passes.push_back({"readback", "cpu", {p.rendered.readback_ms}});
     auto frame = std::make_shared<RenderedPlan>(std::move(p));
-    writer.submit(frame->plan->frame, [&job, frame, report] {
+    writer.submit(frame->plan->frame, [&job, frame] {
         frame::finishImage(frame->rendered);
         addJobAttributes(frame->rendered.image, job, frame->scene, frame->plan->frame);
-        writeFrameFiles(*frame->plan, frame->rendered.image, *report);
+        writeFrameFiles(*frame->plan, frame->rendered.image, frame->report);
     });
 }
 

@@ -187,7 +187,8 @@ void compileAndLink(const Program& program, std::string_view label,
         }
         glAttachShader(program.id(), s);
     }
-    glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
+    if (!programCacheFolder().empty())
+        glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);

@@ -24,7 +24,7 @@ done
 set -m  # background jobs keep SIGINT's default action (without job control they ignore it)
 interrupt() {  # interrupt SIGNAL FOLDER: starts a sequence, signals it mid-write; exit code in RC
     local sig=$1 dir=$2
-    "$PENUMBRA" render "$DATA/small.json" -f 1-60 --size 256x192 -o "$dir/f.####.exr" \
+    "$PENUMBRA" render "$DATA/small.json" -f 1-30 --size 192x144 -o "$dir/f.####.exr" \
         --preview "$dir/f.####.png" --quiet &
     local pid=$! seen=0
     for _ in $(seq 1 4000); do
@@ -55,11 +55,11 @@ for sig in INT TERM; do
 done
 interrupt KILL k_KILL
 complete_frames k_KILL
-"$PENUMBRA" render "$DATA/small.json" -f 1-60 --size 256x192 -o "k_KILL/f.####.exr" \
+"$PENUMBRA" render "$DATA/small.json" -f 1-30 --size 192x144 -o "k_KILL/f.####.exr" \
     --preview "k_KILL/f.####.png" --quiet --skip-existing
 left=$(find k_KILL -name '*.tmp')
 [ -z "$left" ] || fail "the rerun after SIGKILL left temporaries: $left"
-[ "$(find k_KILL -name '*.exr' | wc -l)" -eq 60 ] || fail "the rerun did not complete the sequence"
+[ "$(find k_KILL -name '*.exr' | wc -l)" -eq 30 ] || fail "the rerun did not complete the sequence"
 set +m
 
 # 3. The program cache ($XDG_CACHE_HOME is this test's own, lib.sh): a second process loads
