@@ -29,6 +29,7 @@ struct TemporarySlot {
     char path[4096];
 };
 TemporarySlot g_temporaries[64];
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots");
 
 // The slot holding TMP (absolute), or -1 when none is free or the path is too long (then a
 // signal leaves that file for removeStaleTemporaries).
