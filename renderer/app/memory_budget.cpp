@@ -22,7 +22,7 @@ u64 product(std::initializer_list<u64> f) {
 
 std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
                                        const techniques::TechniqueInfo& technique,
-                                       const Params& params) {
+                                       const Params& params, int frames_in_flight) {
     const u64 pixels = product({static_cast<u64>(s.image.width), static_cast<u64>(s.image.height)});
     const u64 lights = std::max<u64>(1, s.lights.size());
     std::vector<MemoryTerm> out;
@@ -33,7 +33,12 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
     out.push_back({"image.width", "the G-buffer and shading targets", product({pixels, 40 + 20})});
     out.push_back({"image.width", "the visibility layers", product({pixels, lights, 16}), true});
     out.push_back({"image.width", "the diagnostic layers", product({pixels, lights, 16})});
-    out.push_back({"image.width", "the readback and the EXR image", product({pixels, 2 * 17 * 4})});
+    const u64 in_flight = static_cast<u64>(std::max(frames_in_flight, 1));
+    out.push_back({"image.width",
+                   in_flight > 1 ? "the readbacks and EXR images of " + std::to_string(in_flight) +
+                                       " frames in flight"
+                                 : "the readback and the EXR image",
+                   product({pixels, in_flight, 2 * 17 * 4})});
     if (s.image.samples > 1) {
         const u64 samples = static_cast<u64>(s.image.samples);
         out.push_back({"image.samples",
@@ -48,12 +53,12 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
 }
 
 void checkMemoryBudget(const scene::Scene& s, const techniques::TechniqueInfo& technique,
-                       const Params& params, const gl::ContextInfo* gl) {
+                       const Params& params, const gl::ContextInfo* gl, int frames_in_flight) {
     const std::string where = s.path.string() + ": ";
     if (technique.limit_error)
         if (std::string error = technique.limit_error(params); !error.empty())
             throw InputError(where + error);
-    const std::vector<MemoryTerm> terms = estimateMemory(s, technique, params);
+    const std::vector<MemoryTerm> terms = estimateMemory(s, technique, params, frames_in_flight);
     u64 total = 0;
     const MemoryTerm* largest = nullptr;
     for (const MemoryTerm& t : terms) {

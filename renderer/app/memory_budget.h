@@ -21,16 +21,18 @@ namespace penumbra::app {
 constexpr std::uint64_t kSoftwareTextureLimit = std::uint64_t{2} << 30;
 
 // The terms for S rendered with TECHNIQUE and its resolved PARAMS (approximate: the largest
-// buffers, not every small one): the frame's own, then the technique's.
+// buffers, not every small one): the frame's own, then the technique's. FRAMES_IN_FLIGHT:
+// frames whose readback or image is alive at once (a sequence reads one back and writes another
+// while the next renders).
 std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
                                        const techniques::TechniqueInfo& technique,
-                                       const Params& params);
+                                       const Params& params, int frames_in_flight = 1);
 
 // Throws InputError("<scene>: <key>: ...") when the technique's own bound refuses PARAMS
 // (TechniqueInfo::limit_error), the estimate exceeds the memory limit (naming the largest term's
 // key), or a texture exceeds llvmpipe's per-texture limit (GL given). GL may be null (no context
 // yet). GL's size limits are the parameter table's (GlLimit, checkGlLimits).
 void checkMemoryBudget(const scene::Scene& s, const techniques::TechniqueInfo& technique,
-                       const Params& params, const gl::ContextInfo* gl);
+                       const Params& params, const gl::ContextInfo* gl, int frames_in_flight = 1);
 
 }  // namespace penumbra::app

@@ -9,17 +9,24 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
+#include <optional>
+#include <utility>
 
 #include "renderer/app/memory_budget.h"
 #include "renderer/app/render_job_checks.h"
 #include "renderer/app/render_job_outputs.h"
 #include "renderer/app/render_job_plan.h"
 #include "renderer/app/render_job_progress.h"
+#include "renderer/app/render_job_writer.h"
+#include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
+#include "renderer/core/process_clock.h"
 #include "renderer/frame/camera_attributes.h"
 #include "renderer/frame/render_frame.h"
 #include "renderer/gl/debug.h"
 #include "renderer/gl/program.h"
+#include "renderer/gl/program_cache.h"
 #include "renderer/output/cryptomatte.h"
 #include "renderer/output/timing.h"
 
@@ -74,11 +81,11 @@ struct JobFrames {
     frame::FrameRenderer& renderer;
     gl::PassTimer& timer;
     nlohmann::json backend;
-    std::string scene_name;  // canonical: the same from any folder
+    std::string scene_name;          // canonical: the same from any folder
+    const double& ms_to_first_pass;  // from the process's start; -1 until the first pass
 };
 
-// The timing report of R: passes in first-run order with one figure per timed run, then the
-// readback.
+// The timing report of R: passes in first-run order with one figure per timed run.
 output::FrameReport timingReport(const frame::RenderedFrame& r, const char* clock) {
     output::FrameReport report;
     std::map<std::string, size_t> pass_index;
@@ -90,8 +97,7 @@ output::FrameReport timingReport(const frame::RenderedFrame& r, const char* cloc
             report.passes[it->second].ms.push_back(t.ms);
         }
     }
-    report.passes.push_back({"readback", "cpu", {r.readback_ms}});
-    return report;
+    return report;  // the readback is added when it is done (handOver)
 }
 
 // The render job's header attributes after renderFrame's: scene, backend, frame, samples,
@@ -112,13 +118,17 @@ void addJobAttributes(output::Image& image, const JobFrames& job, const scene::S
     output::addCryptomatte(image, "CryptoObject", names, job.renderer.samples());
 }
 
-// Renders PLAN's frame and writes its EXR, timing JSON and preview. Throws RuntimeError.
-void renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
-    const RenderRequest& req = job.req;
-    scene::Scene s = job.in.source.at(plan.frame);
-    frame::RenderedFrame r =
-        frame::renderFrame(job.renderer, s, resolveFor(job.in.info, s), job.timer, req.runs);
-    addJobAttributes(r.image, job, s, plan.frame);
+// A frame rendered with its readback under way, and what its files need.
+struct RenderedPlan {
+    const FramePlan* plan;
+    scene::Scene scene;
+    frame::RenderedFrame rendered;
+    output::FrameReport report;  // all but the readback's time
+};
+
+// The timing report of a frame just rendered (the renderer's parameters are still its own).
+output::FrameReport frameReport(const JobFrames& job, const FramePlan& plan,
+                                const frame::RenderedFrame& r) {
     output::FrameReport report = timingReport(r, job.timer.clockName());
     report.scene = job.scene_name;
     report.frame = plan.frame;
@@ -128,31 +138,92 @@ void renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
     report.width = job.in.first.image.width;
     report.height = job.in.first.image.height;
     report.samples = job.renderer.samples();
-    report.warmup = req.runs.warmup;
+    report.warmup = job.req.runs.warmup;
+    const gl::ProgramCacheStats programs = gl::programCacheStats();
+    report.process = {{"programs_compiled", programs.compiled},
+                      {"programs_from_cache", programs.from_cache}};
+    if (job.ms_to_first_pass >= 0) report.process["ms_to_first_pass"] = job.ms_to_first_pass;
     report.stats = r.stats;
     report.stats["triangles"] = job.renderer.gpuScene().triangleCount();
     report.stats["lights"] = job.renderer.lightCount();
     report.output = {{"exr", plan.exr}};
     if (!plan.preview.empty()) report.output["preview"] = plan.preview;
-    writeFrameFiles(plan, r.image, report);
+    return report;
+}
+
+// Renders PLAN's frame; its readback is left running. Throws RuntimeError.
+RenderedPlan renderPlannedFrame(const JobFrames& job, const FramePlan& plan) {
+    scene::Scene s = job.in.source.at(plan.frame);
+    frame::RenderedFrame r = frame::renderFrameDeferred(job.renderer, s, resolveFor(job.in.info, s),
+                                                        job.timer, job.req.runs);
+    output::FrameReport report = frameReport(job, plan, r);
+    return {&plan, std::move(s), std::move(r), std::move(report)};
+}
+
+// Waits for P's readback (GL thread), then hands WRITER the rest: the image assembled, its
+// attributes, the EXR, timing JSON and preview written. Throws RuntimeError.
+void handOver(const JobFrames& job, FrameWriter& writer, RenderedPlan&& p) {
+    const auto wait_start = Clock::now();
+    p.rendered.readback.wait();
+    p.rendered.readback_ms +=
+        std::chrono::duration<double, std::milli>(Clock::now() - wait_start).count();
+    p.report.passes.push_back({"readback", "cpu", {p.rendered.readback_ms}});
+    auto frame = std::make_shared<RenderedPlan>(std::move(p));
+    writer.submit(frame->plan->frame, [&job, frame] {
+        frame::finishImage(frame->rendered);
+        addJobAttributes(frame->rendered.image, job, frame->scene, frame->plan->frame);
+        writeFrameFiles(*frame->plan, frame->rendered.image, frame->report);
+    });
 }
 
 struct Tally {
     int written = 0, skipped = 0, failed = 0;
 };
 
+// One line per failed frame; counts the rest as written.
+void countOutcomes(std::vector<WriteOutcome> outcomes, Progress& progress, Tally& tally) {
+    for (const WriteOutcome& o : outcomes) {
+        if (o.message.empty()) {
+            ++tally.written;
+            continue;
+        }
+        progress.done();
+        std::fprintf(stderr, "penumbra: frame %d: %s\n", o.frame, o.message.c_str());
+        ++tally.failed;
+    }
+}
+
 // 3. Per-run GPU resources, then every planned frame; a frame that fails is counted, not fatal.
+// Frame N's readback completes while frame N + 1 renders, and its files are written on the
+// writer's thread while the frames after it render.
 Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::ContextInfo& gl) {
     frame::FrameRenderer renderer(gl, in.first, in.info, in.params);
     gl::PassTimer timer(gl.software);
     const nlohmann::json backend = {{"api", gl.api},         {"device", gl.device},
                                     {"vendor", gl.vendor},   {"renderer", gl.renderer},
                                     {"version", gl.version}, {"clock", timer.clockName()}};
-    const JobFrames job{req, in, gl, renderer, timer, backend, canonicalScenePath(req.scene)};
+    double ms_to_first_pass = -1;
+    const JobFrames job{
+        req, in, gl, renderer, timer, backend, canonicalScenePath(req.scene), ms_to_first_pass};
     const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
     Progress progress(progress_on, in.plans.size());
-    if (progress_on) timer.on_begin = [&](const std::string& pass) { progress.pass(pass); };
+    timer.on_begin = [&](const std::string& pass) {
+        if (ms_to_first_pass < 0) ms_to_first_pass = processAgeMs();
+        if (progress_on) progress.pass(pass);
+    };
     Tally tally;
+    FrameWriter writer(1, FrameWriter::serialRequested());  // before PENDING: outlived by it
+    std::optional<RenderedPlan> pending;  // rendered, its readback not yet waited for
+    auto handOverPending = [&] {
+        if (!pending) return;
+        const int frame = pending->plan->frame;
+        try {
+            handOver(job, writer, *std::exchange(pending, std::nullopt));
+        } catch (const RuntimeError& e) {
+            countOutcomes({{frame, e.what()}}, progress, tally);
+        }
+        countOutcomes(writer.takeOutcomes(), progress, tally);
+    };
     for (size_t fi = 0; fi < in.plans.size(); ++fi) {
         const FramePlan& plan = in.plans[fi];
         if (plan.skip) {
@@ -161,14 +232,17 @@ Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::Conte
         }
         progress.frame(fi, plan.frame);
         try {
-            renderPlannedFrame(job, plan);
-            ++tally.written;
+            RenderedPlan next = renderPlannedFrame(job, plan);
+            handOverPending();
+            pending = std::move(next);
         } catch (const RuntimeError& e) {
-            progress.done();
-            std::fprintf(stderr, "penumbra: frame %d: %s\n", plan.frame, e.what());
-            ++tally.failed;
+            handOverPending();
+            countOutcomes({{plan.frame, e.what()}}, progress, tally);
         }
     }
+    handOverPending();
+    writer.finish();
+    countOutcomes(writer.takeOutcomes(), progress, tally);
     progress.done();
     return tally;
 }
@@ -183,6 +257,7 @@ int runRenderJob(const RenderRequest& req) {
             if (!p.skip) std::printf("%d\n", p.frame);
         return 0;
     }
+    removeTemporariesOnSignal();  // Ctrl-C leaves no temporary behind, even mid-write
     if (!prepareOutputs(req, in.plans)) return 0;
 
     // 2. The context (exit 3 if none), then the limits only GL knows.
@@ -191,7 +266,11 @@ int runRenderJob(const RenderRequest& req) {
     gl::enableDebugOutput(req.gl.debug);
     gl::setStrictUniforms(req.gl.debug);  // a uniform no shader declares is a bug: fail
     checkGlLimits(in.first, in.info, in.params, glinfo);
-    checkMemoryBudget(in.first, in.info, in.params, &glinfo);  // exit 2 before allocating
+    // A sequence has up to 3 frames in flight: one written, one read back, one rendering.
+    const auto to_render =
+        std::count_if(in.plans.begin(), in.plans.end(), [](const FramePlan& p) { return !p.skip; });
+    checkMemoryBudget(in.first, in.info, in.params, &glinfo,
+                      static_cast<int>(std::min<long>(to_render, 3)));  // exit 2 before allocating
 
     const Tally tally = renderFrames(req, in, glinfo);  // 3.
     if (!req.quiet && in.plans.size() > 1)

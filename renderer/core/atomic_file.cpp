@@ -4,19 +4,60 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <iterator>
+#include <utility>
 
 #include "renderer/core/error.h"
+#include "renderer/core/process_clock.h"
 #include "renderer/core/regular_file.h"
 
 namespace penumbra {
 namespace {
 constexpr const char* kOnlyRegular = " (an output replaces only a regular file)";
 thread_local AtomicGroup* current_group = nullptr;
+
+// The temporaries being written or awaiting a commit, for the signal handler: a slot's path is
+// complete while its state is kHeld. Lock-free atomics only, so the handler may read them.
+constexpr int kFree = 0, kFilling = 1, kHeld = 2;
+struct TemporarySlot {
+    std::atomic<int> state{kFree};
+    char path[4096];
+};
+TemporarySlot g_temporaries[64];
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots");
+
+// The slot holding TMP (absolute), or -1 when none is free or the path is too long (then a
+// signal leaves that file for removeStaleTemporaries).
+int holdTemporary(const std::filesystem::path& tmp) {
+    std::error_code ec;
+    const std::string path = std::filesystem::absolute(tmp, ec).string();
+    if (ec || path.size() >= sizeof(TemporarySlot::path)) return -1;
+    for (int i = 0; i < static_cast<int>(std::size(g_temporaries)); ++i) {
+        TemporarySlot& slot = g_temporaries[i];
+        int expected = kFree;
+        if (!slot.state.compare_exchange_strong(expected, kFilling)) continue;
+        std::memcpy(slot.path, path.c_str(), path.size() + 1);
+        slot.state.store(kHeld);
+        return i;
+    }
+    return -1;
+}
+
+void releaseTemporary(int slot) {
+    if (slot >= 0) g_temporaries[slot].state.store(kFree);
+}
+
+extern "C" void removeTemporariesAndEnd(int signal_number) {
+    for (TemporarySlot& slot : g_temporaries)
+        if (slot.state.load() == kHeld) ::unlink(slot.path);
+    ::signal(signal_number, SIG_DFL);
+    ::raise(signal_number);
+}
 
 void renameIntoPlace(const std::filesystem::path& tmp, const std::filesystem::path& path) {
     std::error_code ec;
@@ -28,25 +69,17 @@ void renameIntoPlace(const std::filesystem::path& tmp, const std::filesystem::pa
     }
 }
 
-// When process PID started, in seconds since the epoch (/proc/PID/stat field 22 and the boot
-// time of /proc/stat), or -1 when unknown.
+// When process PID started, in seconds since the epoch (its start ticks and the boot time of
+// /proc/stat), or -1 when unknown.
 double processStart(long pid) {
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string text;
-    std::getline(stat, text);
-    const size_t paren = text.rfind(')');  // the command name may hold spaces
-    if (paren == std::string::npos) return -1;
-    std::istringstream fields(text.substr(paren + 2));
-    std::string field;
-    for (int i = 3; i <= 22 && fields >> field; ++i) {
-    }
+    const double ticks = processStartTicks(pid);
     std::ifstream boot("/proc/stat");
     std::string key;
     double btime = -1;
     while (boot >> key)
         if (key == "btime" && boot >> btime) break;
-    if (btime < 0 || field.empty()) return -1;
-    return btime + std::stod(field) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+    if (btime < 0 || ticks < 0) return -1;
+    return btime + ticks / static_cast<double>(::sysconf(_SC_CLK_TCK));
 }
 
 // True when process PID is gone, or was started after TIME (its PID was reused since).
@@ -67,15 +100,29 @@ AtomicGroup::AtomicGroup() : outer_(current_group) {
 AtomicGroup::~AtomicGroup() {
     current_group = outer_;
     std::error_code ec;
-    for (const auto& [tmp, path] : pending_) std::filesystem::remove(tmp, ec);
+    for (const Pending& p : pending_) {
+        std::filesystem::remove(p.tmp, ec);
+        releaseTemporary(p.slot);
+    }
 }
 
 void AtomicGroup::commit() {
-    for (size_t i = 0; i < pending_.size(); ++i) {
-        renameIntoPlace(pending_[i].first, pending_[i].second);
-        pending_[i].first.clear();
+    for (Pending& p : pending_) {
+        renameIntoPlace(p.tmp, p.path);  // on failure the destructor removes the rest
+        releaseTemporary(std::exchange(p.slot, -1));
     }
     pending_.clear();
+}
+
+void removeTemporariesOnSignal() {
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction old {};
+        if (::sigaction(signal_number, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+        struct sigaction action {};
+        action.sa_handler = removeTemporariesAndEnd;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(signal_number, &action, nullptr);
+    }
 }
 
 int removeStaleTemporaries(const std::filesystem::path& path) {
@@ -122,20 +169,29 @@ void writeAtomically(const std::filesystem::path& path,
     if (const std::string why = notReplaceableReason(path); !why.empty())
         throw RuntimeError(path.string() + ": " + why + kOnlyRegular);
     const std::filesystem::path tmp = temporaryPathFor(path);
+    const int slot = holdTemporary(tmp);
     try {
         write(tmp);
     } catch (const Error&) {
         std::filesystem::remove(tmp, ec);
+        releaseTemporary(slot);
         throw;
     } catch (const std::exception& e) {
         std::filesystem::remove(tmp, ec);
+        releaseTemporary(slot);
         throw RuntimeError(path.string() + ": write failed: " + e.what());
     }
     if (current_group) {
-        current_group->pending_.emplace_back(tmp, path);
+        current_group->pending_.push_back({tmp, path, slot});
         return;
     }
-    renameIntoPlace(tmp, path);
+    try {
+        renameIntoPlace(tmp, path);
+    } catch (...) {
+        releaseTemporary(slot);
+        throw;
+    }
+    releaseTemporary(slot);
 }
 
 void checkOutputPath(const std::filesystem::path& path, const std::string& label) {

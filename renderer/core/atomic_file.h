@@ -34,9 +34,19 @@ public:
 private:
     friend void writeAtomically(const std::filesystem::path&,
                                 const std::function<void(const std::filesystem::path&)>&);
-    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> pending_;  // tmp, final
+    struct Pending {
+        std::filesystem::path tmp, path;
+        int slot;  // in the signal handler's list (removeTemporariesOnSignal)
+    };
+    std::vector<Pending> pending_;
     AtomicGroup* outer_;
 };
+
+// From now on SIGINT, SIGTERM and SIGHUP (where their action is the default, to end the
+// process) first remove every temporary this process is writing or holding for a group's
+// commit, then end it as before; a killed (SIGKILL) process leaves them for
+// removeStaleTemporaries.
+void removeTemporariesOnSignal();
 
 // Removes the temporaries "<dir>/.<name>.<pid>.tmp" of PATH left by a process that is gone (its
 // PID is not alive, or was started after the file was last written). Returns how many.

@@ -2,31 +2,92 @@
 #include "renderer/frame/frame_image.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
-#include "renderer/passes/readback.h"
+#include "renderer/core/error.h"
 
 namespace penumbra::frame {
 
 using output::PixelType;
 
-output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade& shade,
-                             const OutputTargets& targets, int lights,
-                             const std::string& technique_name,
-                             const std::vector<DiagnosticChannel>& diagnostics) {
+void FrameReadback::wait() {
+    fence.wait("readback");
+}
+
+FrameReadback startFrameReadback(passes::ReadbackPool& pool, const passes::GBuffer& gbuffer,
+                                 const passes::Shade& shade, const OutputTargets& targets,
+                                 int lights, const std::string& technique_name,
+                                 const std::vector<DiagnosticChannel>& diagnostics) {
     const int w = gbuffer.width(), h = gbuffer.height();
-    const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+    FrameReadback r;
+    r.width = w;
+    r.height = h;
+    r.lights = lights;
+    r.technique_name = technique_name;
+    r.diagnostics = diagnostics;
+    auto rgba = [&](const gl::Texture& t) { return pool.read(t, w, h, GL_RGBA, GL_FLOAT, 16); };
+    auto red = [&](const gl::Texture& t, int layer) {
+        return pool.read(t, w, h, GL_RED, GL_FLOAT, 4, layer);
+    };
+    r.beauty = rgba(shade.beauty());
+    r.position = rgba(gbuffer.position());
+    r.normal = rgba(gbuffer.normal());
+    r.id = pool.read(gbuffer.id(), w, h, GL_RED_INTEGER, GL_INT, 4);
+    r.visibility = red(shade.visibility(), -1);
+    // With several lights, each light's own visibility (its layer's .r: the fraction of that
+    // light's area the point sees) beside the irradiance-weighted `visibility`.
+    for (int l = 0; lights > 1 && l < lights; ++l)
+        r.light_visibility.push_back(red(targets.visibility(), l));
+    for (size_t d = 0; d < diagnostics.size(); ++d) {
+        r.diagnostic.emplace_back();
+        for (int l = 0; l < lights; ++l)
+            r.diagnostic.back().push_back(red(targets.diagnostics()[d], l));
+    }
+    r.fence = pool.fence();
+    return r;
+}
+
+namespace {
+
+// A single-float layer as a channel, GL's bottom-up rows turned top first.
+void copyRows(const float* src, int w, int h, std::vector<float>& dst) {
+    const size_t row = static_cast<size_t>(w);
+    for (int y = 0; y < h; ++y)
+        std::copy_n(src + row * static_cast<size_t>(h - 1 - y), row,
+                    dst.begin() + static_cast<std::ptrdiff_t>(row * static_cast<size_t>(y)));
+}
+
+// Diagnostic D of every light combined (sum or max) into CH.
+void combineDiagnostic(const FrameReadback& r, size_t d, std::vector<float>& ch) {
+    std::vector<float> layer(ch.size());
+    for (int l = 0; l < r.lights; ++l) {
+        copyRows(r.diagnostic[d][static_cast<size_t>(l)]->as<float>(), r.width, r.height,
+                 l == 0 ? ch : layer);
+        if (l == 0) continue;
+        for (size_t i = 0; i < ch.size(); ++i)
+            ch[i] = r.diagnostics[d].combine == DiagnosticChannel::Combine::Sum
+                        ? ch[i] + layer[i]
+                        : std::max(ch[i], layer[i]);
+    }
+}
+
+}  // namespace
+
+output::Image assembleFrameImage(const FrameReadback& rb) {
+    if (rb.fence.pending())
+        throw RuntimeError("readback: assembled before its copies were waited for");
+    const int w = rb.width, h = rb.height;
     output::Image img;
     img.width = w;
     img.height = h;
-    auto beauty = passes::readTexture(shade.beauty(), w, h, 4, GL_RGBA);
-    auto position = passes::readTexture(gbuffer.position(), w, h, 4, GL_RGBA);
-    auto normal = passes::readTexture(gbuffer.normal(), w, h, 4, GL_RGBA);
-    auto id = passes::readTexture(gbuffer.id(), w, h, 1, GL_RED_INTEGER);
-    auto visibility = passes::readTexture(shade.visibility(), w, h, 1, GL_RED);
-
+    const float* beauty = rb.beauty->as<float>();
+    const float* position = rb.position->as<float>();
+    const float* normal = rb.normal->as<float>();
+    const std::int32_t* id = rb.id->as<std::int32_t>();
+    const float* visibility = rb.visibility->as<float>();
     // add() returns references into img.channels: reserve so none moves while they are held.
-    img.channels.reserve(13 + diagnostics.size() + static_cast<size_t>(lights > 1 ? lights : 0));
+    img.channels.reserve(13 + rb.diagnostics.size() + rb.light_visibility.size());
     auto& r = img.add("R", PixelType::Half);
     auto& g = img.add("G", PixelType::Half);
     auto& b = img.add("B", PixelType::Half);
@@ -40,43 +101,35 @@ output::Image readFrameImage(const passes::GBuffer& gbuffer, const passes::Shade
     auto& nz = img.add("N.Z", PixelType::Half);
     auto& vis = img.add("visibility", PixelType::Float);
     auto& ids = img.add("id", PixelType::Float);
-    for (size_t i = 0; i < n; ++i) {
-        const bool covered = position[4 * i + 3] != 0.0f;
-        r.pixels[i] = beauty[4 * i + 0];
-        g.pixels[i] = beauty[4 * i + 1];
-        b.pixels[i] = beauty[4 * i + 2];
-        a.pixels[i] = beauty[4 * i + 3];  // coverage: the share of samples on geometry
-        // +inf on the background, where compositors expect it (nothing there, infinitely far).
-        z.pixels[i] = covered ? normal[4 * i + 3] : std::numeric_limits<float>::infinity();
-        px.pixels[i] = position[4 * i + 0];
-        py.pixels[i] = position[4 * i + 1];
-        pz.pixels[i] = position[4 * i + 2];
-        nx.pixels[i] = normal[4 * i + 0];
-        ny.pixels[i] = normal[4 * i + 1];
-        nz.pixels[i] = normal[4 * i + 2];
-        vis.pixels[i] = visibility[i];
-        ids.pixels[i] = id[i];
-    }
-    // With several lights, each light's own visibility (its layer's .r: the fraction of that
-    // light's area the point sees) beside the irradiance-weighted `visibility`.
-    for (int l = 0; lights > 1 && l < lights; ++l) {
-        auto layer = passes::readTexture(targets.visibility(), w, h, 1, GL_RED, l);
-        img.add("visibility." + std::to_string(l), PixelType::Float).pixels = std::move(layer);
-    }
-    for (size_t d = 0; d < diagnostics.size(); ++d) {
-        auto& ch = img.add(technique_name + "." + diagnostics[d].name, PixelType::Float);
-        for (int l = 0; l < lights; ++l) {
-            auto layer = passes::readTexture(targets.diagnostics()[d], w, h, 1, GL_RED, l);
-            for (size_t i = 0; i < n; ++i) {
-                if (l == 0)
-                    ch.pixels[i] = layer[i];
-                else if (diagnostics[d].combine == DiagnosticChannel::Combine::Sum)
-                    ch.pixels[i] += layer[i];
-                else
-                    ch.pixels[i] = std::max(ch.pixels[i], layer[i]);
-            }
+    const size_t width = static_cast<size_t>(w);
+    for (int y = 0; y < h; ++y) {
+        for (size_t x = 0; x < width; ++x) {
+            const size_t i = static_cast<size_t>(y) * width + x;          // top first
+            const size_t s = static_cast<size_t>(h - 1 - y) * width + x;  // GL: bottom first
+            const bool covered = position[4 * s + 3] != 0.0f;
+            r.pixels[i] = beauty[4 * s + 0];
+            g.pixels[i] = beauty[4 * s + 1];
+            b.pixels[i] = beauty[4 * s + 2];
+            a.pixels[i] = beauty[4 * s + 3];  // coverage: the share of samples on geometry
+            // +inf on the background, where compositors expect it (nothing there, infinitely far).
+            z.pixels[i] = covered ? normal[4 * s + 3] : std::numeric_limits<float>::infinity();
+            px.pixels[i] = position[4 * s + 0];
+            py.pixels[i] = position[4 * s + 1];
+            pz.pixels[i] = position[4 * s + 2];
+            nx.pixels[i] = normal[4 * s + 0];
+            ny.pixels[i] = normal[4 * s + 1];
+            nz.pixels[i] = normal[4 * s + 2];
+            vis.pixels[i] = visibility[s];
+            ids.pixels[i] = static_cast<float>(id[s]);
         }
     }
+    for (size_t l = 0; l < rb.light_visibility.size(); ++l)
+        copyRows(rb.light_visibility[l]->as<float>(), w, h,
+                 img.add("visibility." + std::to_string(l), PixelType::Float).pixels);
+    for (size_t d = 0; d < rb.diagnostics.size(); ++d)
+        combineDiagnostic(
+            rb, d,
+            img.add(rb.technique_name + "." + rb.diagnostics[d].name, PixelType::Float).pixels);
     return img;
 }
 

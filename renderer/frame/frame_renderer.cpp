@@ -76,11 +76,11 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
     return stats;
 }
 
-output::Image FrameRenderer::readImage() const {
-    output::Image image =
-        readFrameImage(gbuffer_, shade_, *targets_, lights_, std::string(info_.name), diagnostics_);
+FrameReadback FrameRenderer::startReadback() {
+    FrameReadback r = startFrameReadback(*readback_, gbuffer_, shade_, *targets_, lights_,
+                                         std::string(info_.name), diagnostics_);
     gl::checkErrors("readback");
-    return image;
+    return r;
 }
 
 }  // namespace penumbra::frame

@@ -12,6 +12,7 @@
 
 #include "renderer/core/params.h"
 #include "renderer/frame/frame_context.h"
+#include "renderer/frame/frame_image.h"
 #include "renderer/frame/technique.h"
 #include "renderer/gl/context.h"
 #include "renderer/gl/pass_timer.h"
@@ -34,8 +35,9 @@ public:
     // Renders SCENE (same objects as FIRST, animated values) with every pass timed by TIMER.
     // Returns the technique statistics of this render.
     nlohmann::json render(const scene::Scene& scene, gl::PassTimer& timer);
-    // The last render as an image (channels of PRODUCT.md, no attributes).
-    output::Image readImage() const;
+    // The last render's copies queued (pixel buffers), to be waited for and assembled into the
+    // image of PRODUCT.md's channels later (frame_image.h). The renderer must outlive them.
+    FrameReadback startReadback();
 
     const passes::GpuScene& gpuScene() const { return gpu_; }
     // Samples per pixel (the scene's image.samples).
@@ -62,6 +64,7 @@ private:
     std::unique_ptr<Technique> technique_;
     std::vector<DiagnosticChannel> diagnostics_;
     std::unique_ptr<OutputTargets> targets_;
+    std::shared_ptr<passes::ReadbackPool> readback_ = passes::ReadbackPool::create();
 };
 
 }  // namespace penumbra::frame

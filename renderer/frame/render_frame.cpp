@@ -17,8 +17,8 @@ double msSince(Clock::time_point start) {
 
 }  // namespace
 
-RenderedFrame renderFrame(FrameRenderer& renderer, const scene::Scene& s, const Params& params,
-                          gl::PassTimer& timer, FrameRuns runs) {
+RenderedFrame renderFrameDeferred(FrameRenderer& renderer, const scene::Scene& s,
+                                  const Params& params, gl::PassTimer& timer, FrameRuns runs) {
     renderer.setParams(params);
     RenderedFrame out;
     for (int run = 0; run < runs.warmup + runs.repeat; ++run) {
@@ -30,13 +30,30 @@ RenderedFrame renderFrame(FrameRenderer& renderer, const scene::Scene& s, const 
         if (run >= runs.warmup) out.runs.push_back({frame_ms, std::move(passes)});
     }
     const auto read_start = Clock::now();
-    out.image = renderer.readImage();
+    out.readback = renderer.startReadback();
     out.readback_ms = msSince(read_start);
     out.image.attributes = {{"penumbra/version", PENUMBRA_VERSION},
                             {"penumbra/commit", PENUMBRA_COMMIT},
                             {"penumbra/technique", std::string(renderer.technique().name)},
                             {"penumbra/params", renderer.params().json().dump()}};
     gl::checkErrors(s.path.string());  // no GL error after any render, for every caller
+    return out;
+}
+
+void finishImage(RenderedFrame& r) {
+    output::Image image = assembleFrameImage(r.readback);
+    image.attributes = std::move(r.image.attributes);
+    r.image = std::move(image);
+    r.readback = {};
+}
+
+RenderedFrame renderFrame(FrameRenderer& renderer, const scene::Scene& s, const Params& params,
+                          gl::PassTimer& timer, FrameRuns runs) {
+    RenderedFrame out = renderFrameDeferred(renderer, s, params, timer, runs);
+    const auto wait_start = Clock::now();
+    out.readback.wait();
+    finishImage(out);
+    out.readback_ms += msSince(wait_start);
     return out;
 }
 

@@ -35,7 +35,10 @@ struct RenderedFrame {
     output::Image image;
     nlohmann::json stats;        // the technique statistics of the last run
     std::vector<TimedRun> runs;  // the timed runs (not the warm-up)
-    double readback_ms = 0;      // CPU time of reading the image back
+    double readback_ms = 0;      // CPU time of reading the image back (on the GL thread)
+    // renderFrameDeferred only: the copies under way; IMAGE has its attributes but no
+    // channels until finishImage.
+    FrameReadback readback;
 };
 
 // Renders S with RENDERER's technique and PARAMS (the technique is recreated when they
@@ -43,6 +46,14 @@ struct RenderedFrame {
 // a GL error.
 RenderedFrame renderFrame(FrameRenderer& renderer, const scene::Scene& s, const Params& params,
                           gl::PassTimer& timer, FrameRuns runs);
+
+// The same with the readback only started (pixel buffers) at the end of the frame, so the
+// caller can render on while it completes: then R.readback.wait() on the GL thread (its time
+// is the caller's to add to readback_ms), and finishImage(R) on any thread, while RENDERER lives.
+RenderedFrame renderFrameDeferred(FrameRenderer& renderer, const scene::Scene& s,
+                                  const Params& params, gl::PassTimer& timer, FrameRuns runs);
+// Assembles R's waited-for readback into R.image's channels and frees the readback.
+void finishImage(RenderedFrame& r);
 
 // The same for a single frame with its own renderer and timer; CONFIGURE (if any) sees the
 // renderer before it renders.

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "renderer/core/error.h"
+#include "renderer/gl/program_cache.h"
 
 namespace penumbra::shaders {
 extern const std::pair<std::string_view, std::string_view> kEmbedded[];
@@ -159,17 +160,16 @@ std::string shaderSource(std::string_view name) {
     throw RuntimeError("glsl/" + std::string(name) + ": no such embedded shader");
 }
 
-Program buildProgram(std::string_view label, std::initializer_list<std::string_view> stages,
-                     const Defines& defines) {
-    Program program(glCreateProgram(), label);
-    ProgramRecord record{std::string(label), {}};
+namespace {
+
+// Compiles and links SOURCES (stage name, source) into PROGRAM. Throws RuntimeError with the log.
+void compileAndLink(const Program& program, std::string_view label,
+                    const std::vector<std::pair<std::string_view, std::string>>& sources) {
     std::vector<GLuint> shaders;
     auto cleanup = [&] {
         for (GLuint s : shaders) glDeleteShader(s);
     };
-    for (std::string_view name : stages) {
-        std::string src = injectDefines(shaderSource(name), defines);
-        record.uniforms.merge(declaredUniforms(src));
+    for (const auto& [name, src] : sources) {
         GLuint s = glCreateShader(stageOf(name));
         shaders.push_back(s);
         const char* text = src.c_str();
@@ -187,9 +187,12 @@ Program buildProgram(std::string_view label, std::initializer_list<std::string_v
         }
         glAttachShader(program.id(), s);
     }
+    if (!programCacheFolder().empty())
+        glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    for (GLuint s : shaders) glDetachShader(program.id(), s);
     cleanup();
     if (!ok) {
         GLint len = 0;
@@ -197,6 +200,27 @@ Program buildProgram(std::string_view label, std::initializer_list<std::string_v
         std::string log(static_cast<size_t>(std::max(len, 1)), '\0');
         glGetProgramInfoLog(program.id(), len, nullptr, log.data());
         throw RuntimeError("program " + std::string(label) + ": link failed: " + log);
+    }
+}
+
+}  // namespace
+
+Program buildProgram(std::string_view label, std::initializer_list<std::string_view> stages,
+                     const Defines& defines) {
+    Program program(glCreateProgram(), label);
+    ProgramRecord record{std::string(label), {}};
+    std::vector<std::pair<std::string_view, std::string>> sources;
+    std::string key;  // the program cache's: every stage's name and source
+    for (std::string_view name : stages) {
+        std::string src = injectDefines(shaderSource(name), defines);
+        record.uniforms.merge(declaredUniforms(src));
+        key.append(name).append(1, '\0').append(src).append(1, '\0');
+        sources.emplace_back(name, std::move(src));
+    }
+    if (!loadCachedProgram(program.id(), key)) {
+        compileAndLink(program, label, sources);
+        countCompiledProgram();
+        storeCachedProgram(program.id(), key);
     }
     programRecords()[program.id()] = std::move(record);
     return program;

@@ -46,18 +46,21 @@ nlohmann::json toJson(const FrameReport& r) {
                              {"repeats", r.frame_ms.size()},
                              {"warmup", r.warmup}};
     if (r.frame_ms.size() > 1) totals["frame"] = summaryJson(r.frame_ms);
-    return {{"schema", "penumbra-timing"},
-            {"schema_version", 1},
-            {"scene", r.scene},
-            {"frame", r.frame},
-            {"technique", r.technique},
-            {"params", r.params},
-            {"backend", r.backend},
-            {"resolution", {{"width", r.width}, {"height", r.height}, {"samples", r.samples}}},
-            {"passes", passes},
-            {"totals", totals},
-            {"stats", r.stats},
-            {"output", r.output}};
+    nlohmann::json out = {
+        {"schema", "penumbra-timing"},
+        {"schema_version", 1},
+        {"scene", r.scene},
+        {"frame", r.frame},
+        {"technique", r.technique},
+        {"params", r.params},
+        {"backend", r.backend},
+        {"resolution", {{"width", r.width}, {"height", r.height}, {"samples", r.samples}}},
+        {"passes", passes},
+        {"totals", totals},
+        {"stats", r.stats},
+        {"output", r.output}};
+    if (!r.process.empty()) out["process"] = r.process;
+    return out;
 }
 
 void writeTimingJson(const std::filesystem::path& path, const FrameReport& report) {

@@ -25,8 +25,12 @@ struct FrameReport {
     int width = 0, height = 0;
     int samples = 1;  // image.samples
     int warmup = 0;
-    std::vector<PassTiming> passes;                    // in first-run order
-    std::vector<double> frame_ms;                      // whole frame, per repeat
+    std::vector<PassTiming> passes;  // in first-run order
+    std::vector<double> frame_ms;    // whole frame, per repeat
+    // What the process spent before its first pass and how its GL programs were made: the
+    // same in every frame of one process ("ms_to_first_pass", "programs_compiled",
+    // "programs_from_cache"); left out when empty.
+    nlohmann::json process = nlohmann::json::object();
     nlohmann::json stats = nlohmann::json::object();   // technique statistics
     nlohmann::json output = nlohmann::json::object();  // paths written
 };

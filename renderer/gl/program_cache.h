@@ -1,0 +1,36 @@
+// Linked GL programs cached on disk as program binaries (glGetProgramBinary), so a process
+// skips shader compilation for programs an earlier one built on the same driver: one file per
+// program under $XDG_CACHE_HOME/penumbra/programs (else ~/.cache/penumbra/programs), named by a
+// hash of the driver's strings and the program's sources. A file that is unreadable, corrupt,
+// for other sources or refused by the driver is ignored (the program is compiled and the file
+// replaced); nothing is written elsewhere. PENUMBRA_PROGRAM_CACHE=0 turns it off.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <glad/gl.h>
+
+namespace penumbra::gl {
+
+// How this process's programs were made.
+struct ProgramCacheStats {
+    int compiled = 0;    // compiled and linked from source
+    int from_cache = 0;  // loaded from a cached binary
+};
+ProgramCacheStats programCacheStats();
+
+// The folder cached programs go to; empty when the cache is off (PENUMBRA_PROGRAM_CACHE=0) or
+// neither XDG_CACHE_HOME nor HOME is an absolute path.
+std::filesystem::path programCacheFolder();
+
+// KEY: everything the binary depends on (the program's stage names and sources; the driver's
+// strings are added here). Loads the cached binary into PROGRAM: true when it links.
+bool loadCachedProgram(GLuint program, const std::string& key);
+// Stores PROGRAM (linked with GL_PROGRAM_BINARY_RETRIEVABLE_HINT) under KEY; failures are
+// ignored.
+void storeCachedProgram(GLuint program, const std::string& key);
+// Counts a program compiled from source (for programCacheStats).
+void countCompiledProgram();
+
+}  // namespace penumbra::gl

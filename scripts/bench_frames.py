@@ -1,0 +1,105 @@
+"""The `frames` suite of scripts/bench: the cost of a sequence beyond its passes. A `hard`
+sequence of an animated scene (scenes/walk.json's animation stretched over --frames frames) in
+one process: wall time per frame against the sum of the passes per frame (readback excluded:
+it is part of the overhead), their ratio, and the process's time to its first pass (timing
+JSON `process.ms_to_first_pass`), with the EXR writer pipelined (the default) and
+serial (PENUMBRA_SERIAL_WRITES=1), and the time to first pass with a cold and a warm program
+cache (a private cache folder under the bench's output folder).
+"""
+import json
+import os
+import resource
+import shutil
+import statistics
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WALK = os.path.join(ROOT, "scenes", "walk.json")
+
+
+def stretched_walk(out, frames):
+    """scenes/walk.json with its animation keys spread over frames 1..FRAMES, asset paths
+    absolute, written into OUT."""
+    with open(WALK, encoding="utf-8") as f:
+        scene = json.load(f)
+    first, last = (int(x) for x in scene["animation"]["frames"].split("-"))
+    scale = (frames - 1) / max(last - first, 1)
+    for track in scene["animation"]["tracks"]:
+        for key in track["keys"]:
+            key[0] = round(1 + (key[0] - first) * scale)
+    scene["animation"]["frames"] = f"1-{frames}"
+    for o in scene["objects"]:
+        if "gltf" in o and not os.path.isabs(o["gltf"]):
+            o["gltf"] = os.path.join(os.path.dirname(WALK), o["gltf"])
+    path = os.path.join(out, "frames_walk.json")
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(scene, f)
+    return path
+
+
+def cpu_seconds():
+    """User and system CPU time of the finished children so far."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def sequence(b, scene, frames, env, tag):
+    """One process rendering FRAMES frames of SCENE: (wall s, per-frame pass sums, readbacks,
+    ms to first pass, CPU s of the process)."""
+    folder = os.path.join(b.out, f"frames_{tag}")
+    shutil.rmtree(folder, ignore_errors=True)
+    cmd = [b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f", f"1-{frames}", "-o",
+           os.path.join(folder, "f.####.exr"), "--quiet"]
+    start, cpu = time.monotonic(), cpu_seconds()
+    subprocess.run(cmd, check=True, env=env)
+    wall, cpu = time.monotonic() - start, cpu_seconds() - cpu
+    passes, readbacks, first = [], [], None
+    for i in range(1, frames + 1):
+        with open(os.path.join(folder, f"f.{i:04d}.json"), encoding="utf-8") as f:
+            t = json.load(f)
+        passes.append(sum(p["ms"] for p in t["passes"] if p["name"] != "readback"))
+        readbacks.append(sum(p["ms"] for p in t["passes"] if p["name"] == "readback"))
+        first = t.get("process", {}).get("ms_to_first_pass", first)
+    shutil.rmtree(folder, ignore_errors=True)  # 240 frames at 1024x768 are about 2 GB
+    return wall, passes, readbacks, first, cpu
+
+
+def frames(b):
+    n = b.frames
+    scene = stretched_walk(b.out, n)
+    cache = os.path.join(b.out, "frames_cache")
+    base = dict(os.environ, XDG_CACHE_HOME=cache)
+    print(f"\nframes: {n} frames of `hard` on scenes/walk.json's animation, one process, "
+          f"median of {b.repeat} (goal: wall per frame <= 1.3x the sum of the passes)")
+    print("(ratio: wall per frame / its own passes; vs serial: / the serial runs' passes, since "
+          "on few cores the writer's work slows the passes it overlaps; cpu: the process's CPU "
+          "time per frame)")
+    print(f"{'run':<20}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
+          f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}")
+    modes = (("serial writes", {"PENUMBRA_SERIAL_WRITES": "1"}), ("pipelined writes", {}))
+    rows = {label: [] for label, _ in modes}
+    for r in range(b.repeat):  # alternated, so both see the same machine
+        for label, extra in modes:
+            wall, passes, readbacks, first, cpu = sequence(b, scene, n, dict(base, **extra),
+                                                           label[:4])
+            rows[label].append((wall * 1e3 / n, statistics.mean(passes),
+                                statistics.mean(readbacks), cpu * 1e3 / n,
+                                first if first is not None else float("nan")))
+    serial_passes = statistics.median(row[1] for row in rows["serial writes"])
+    for label, _ in modes:
+        per_frame, passes, readback, cpu, first = (statistics.median(c)
+                                                   for c in zip(*rows[label]))
+        print(f"{label:<20}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
+              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}")
+    # Time to first pass: a one-frame render, cold cache (emptied first) and warm, and with the
+    # cache off.
+    for label, extra, empty in (("cold program cache", {}, True), ("warm program cache", {}, False),
+                                ("program cache off", {"PENUMBRA_PROGRAM_CACHE": "0"}, False)):
+        firsts = []
+        for r in range(b.repeat):
+            if empty:
+                shutil.rmtree(cache, ignore_errors=True)
+            firsts.append(sequence(b, scene, 1, dict(base, **extra), "first")[3])
+        print(f"{label:<20}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
+              f"{statistics.median(firsts):>16.1f}")
