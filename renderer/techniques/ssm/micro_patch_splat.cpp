@@ -31,21 +31,30 @@ void Ssm::buildReceiverMax() {
     glUseProgram(0);
 }
 
-// Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
-// makes their count the splat's instance count (no readback).
+// Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
+// order, and makes their count the splat's instance count (no readback): compact.comp's three
+// phases over runs of consecutive texels (count per run, first slot per run, ordered writes).
 void Ssm::compact(const LightWindow& occ, int side) {
     const DrawCommand reset{4, 0, 0, 0};
     glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
-    glUseProgram(compact_program_.id());
+    const auto& p = compact_program_;
+    glUseProgram(p.id());
     glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, occluder_maps_[size_t(side)]->depth.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                      gpu_patches_[size_t(side)].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
-    gl::setUniform(compact_program_, "u_empty", side ? 0.0f : 1.0f);
-    gl::setUniform(compact_program_, "u_occ_near", occ.near);
-    gl::setUniform(compact_program_, "u_occ_range", occ.far - occ.near);
-    const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
-    glDispatchCompute(groups, groups, 1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_RUNS, compact_runs_.id());
+    gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_occ_near", occ.near);
+    gl::setUniform(p, "u_occ_range", occ.far - occ.near);
+    gl::setUniform(p, "u_run", compact_run_);
+    gl::setUniform(p, "u_runs", compact_run_count_);
+    const auto groups = static_cast<GLuint>((compact_run_count_ + 255) / 256);  // 256 per group
+    for (int phase = 0; phase < 3; ++phase) {
+        gl::setUniform(p, "u_phase", phase);
+        glDispatchCompute(phase == 1 ? 1 : groups, 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(0);
 }

@@ -61,6 +61,13 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
             gpu_patches_.push_back(gl::createBuffer("ssm micro-patches (gpu)"));
             glNamedBufferStorage(gpu_patches_.back().id(), bytes, nullptr, 0);
         }
+        // compact.comp's runs of consecutive texels: at most 65536, at least 16 texels each.
+        const int texels = map_size_ * map_size_;
+        compact_run_ = std::max(16, (texels + 65535) / 65536);
+        compact_run_count_ = (texels + compact_run_ - 1) / compact_run_;
+        compact_runs_ = gl::createBuffer("ssm compaction runs");
+        glNamedBufferStorage(compact_runs_.id(),
+                             GLsizeiptr(sizeof(std::uint32_t)) * compact_run_count_, nullptr, 0);
         command_ = gl::createBuffer("ssm splat command");
         glNamedBufferStorage(command_.id(), sizeof(DrawCommand), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }

@@ -97,8 +97,9 @@ private:
     // level: a splat quad into layer k is culled where layer k has no receiver under it.
     void buildReceiverMax();
 
-    // Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
-    // makes their count the splat's instance count (no readback).
+    // Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
+    // order (deterministic, as the CPU path's), and makes their count the splat's instance
+    // count (no readback).
     void compact(const LightWindow& occ, int side);
 
     // Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
@@ -124,8 +125,10 @@ private:
     std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
     gl::Texture receives_;
     gl::Buffer counters_;
-    gl::Buffer command_;                   // path=gpu: the splat's indirect draw
-    std::vector<gl::Buffer> gpu_patches_;  // path=gpu: the micro-patch list of each side
+    gl::Buffer command_;       // path=gpu: the splat's indirect draw
+    gl::Buffer compact_runs_;  // path=gpu: each run's patch count, then first slot
+    int compact_run_ = 16, compact_run_count_ = 0;  // texels per run, runs (compact.comp)
+    std::vector<gl::Buffer> gpu_patches_;           // path=gpu: the micro-patch list of each side
     gl::VertexArray empty_vao_;
     gl::DynamicBuffer patches_buffer_{"ssm micro-patches"};
     std::vector<float> scratch_;
