@@ -31,6 +31,23 @@ void Ssm::buildReceiverMax() {
     glUseProgram(0);
 }
 
+// Each used receiver layer's tangent plane per texel (receiver_planes.comp).
+void Ssm::buildReceiverPlanes(const LightWindow& soft) {
+    const auto& p = planes_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(SSM_UNIT_PLANES_LAYERS, receiver_layers_->depth.id());
+    glBindImageTexture(SSM_IMAGE_PLANES_TARGET, receiver_planes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA16F);
+    gl::setUniform(p, "u_ssm_lo", soft.lo);
+    gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
+    gl::setUniform(p, "u_receiver_near", soft.near);
+    gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
+    const auto groups = static_cast<GLuint>((ssm_size_ + 7) / 8);
+    glDispatchCompute(groups, groups, static_cast<GLuint>(std::max(used_layers_, 1)));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
 // Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
 // order, and makes their count the splat's instance count (no readback): compact.comp's three
 // phases over runs of consecutive texels (count per run, first slot per run, ordered writes).
@@ -78,6 +95,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());
     gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
     gl::setUniform(p, "u_light_half", 0.5f * light.size);

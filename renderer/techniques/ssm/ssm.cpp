@@ -96,6 +96,10 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+    planes_program_ =
+        gl::buildProgram("ssm receiver planes", {"techniques/ssm/receiver_planes.comp"});
+    receiver_planes_ =
+        gl::createTexture2DArray(GL_RGBA16F, ssm_size_, ssm_size_, layers_, "ssm receiver planes");
     counters_ = gl::createBuffer("ssm counters");
     glNamedBufferStorage(counters_.id(), 2 * sizeof(std::uint32_t), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
@@ -125,6 +129,7 @@ void Ssm::render(frame::FrameContext& ctx) {
             used_layers_ = receiver_layers_->render(ctx.gpu, *peel_pass_, receiverFilter(), light,
                                                     depthView(light, soft), gap);
             if (clip_) buildReceiverMax();
+            if (layers_ > 1) buildReceiverPlanes(soft);
         });
         const std::uint32_t zero[2] = {0, 0};
         glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero);

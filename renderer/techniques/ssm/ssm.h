@@ -97,6 +97,10 @@ private:
     // level: a splat quad into layer k is culled where layer k has no receiver under it.
     void buildReceiverMax();
 
+    // Each used receiver layer's tangent plane per texel (receiver_planes.comp), for the splat's
+    // test of a micro-patch over its own object's surface.
+    void buildReceiverPlanes(const LightWindow& soft);
+
     // Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
     // order (deterministic, as the CPU path's), and makes their count the splat's instance
     // count (no readback).
@@ -117,8 +121,10 @@ private:
     int layers_;
     int used_layers_ = 0;  // receiver layers holding a receiver this frame
     std::unique_ptr<passes::LightDepthPass> depth_pass_, peel_pass_;
-    gl::Program splat_program_, visibility_program_, max_program_, compact_program_;
+    gl::Program splat_program_, visibility_program_, max_program_, compact_program_,
+        planes_program_;
     gl::Texture receiver_max_;
+    gl::Texture receiver_planes_;  // RGBA16F array: the receiver layers' normals
     int receiver_levels_ = 1;
     std::vector<std::unique_ptr<passes::LightDepthTarget>> occluder_maps_;
     std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
