@@ -120,6 +120,28 @@ TEST(SsmGL, CpuPathEqualsGpuPathToTheByte) {
     }
 }
 
+TEST(SsmGL, AFlatOccluderAtAnyHeightCastsItsShadow) {
+    // A square parallel to the light lies at the occluder window's nearest depth, and the floor
+    // at the receivers'; the windows' near planes sat exactly there, so at most heights the
+    // rasteriser clipped the square (no micro-patch: a lit floor) or, with layers 1, the floor
+    // (no receiver). The windows now keep a margin before their nearest depth.
+    for (const char* y : {"1.0", "1.4"})
+        for (const char* layers : {"1", "4"}) {
+            const penumbra::scene::Override moved = {"objects.1.transform.translate",
+                                                     std::string("[0.2, ") + y + ", 0.1]"};
+            const auto ref = renderScene("closed_form.json", {moved});
+            const auto img = renderScene(
+                "closed_form.json",
+                {moved,
+                 {"technique",
+                  ssm(R"(, "map_size": 64, "ssm_size": 64, "layers": )" + std::string(layers))}});
+            const double mae = shadowMae(ref, img);
+            std::printf("ssm 64, square at height %s, layers %s: shadow-region MAE %.4f\n", y,
+                        layers, mae);
+            EXPECT_LE(mae, 0.02) << "height " << y << ", layers " << layers;
+        }
+}
+
 TEST(SsmGL, TwoSidedEqualsOneSidedForAFlatOccluder) {
     auto one = renderScene("closed_form.json",
                            {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64)")}});

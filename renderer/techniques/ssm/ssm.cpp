@@ -111,7 +111,8 @@ void Ssm::render(frame::FrameContext& ctx) {
     passes::Bounds receiver_bounds;
     for (const auto& o : ctx.gpu.objects())
         if (receives(o.shadow)) receiver_bounds.extend(o.world_bounds);
-    const LightWindow occ = passes::occluderWindow(light, ctx.gpu.casterBounds());
+    const LightWindow occ =
+        ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBounds()));
     const LightWindow soft = ssm::softShadowWindow(light, occ, receiver_bounds);
     const bool shadowed = !occ.empty() && !soft.empty();
     const int sides = two_sided_ ? 2 : 1;
