@@ -29,6 +29,18 @@ double closedFormMae(const penumbra::output::Image& img, double half) {
     return penumbra::testing::closedFormShadowMae(img, half, 500);
 }
 
+// closed_form.json's occluder replaced by a tilted box: patches of many depths whose quads
+// overlap, and far faces hidden from the light's centre.
+const penumbra::scene::Override kTiltedBox = {
+    "objects.1", R"({"name": "occluder", "box": {"size": [0.6, 0.8, 0.6]},
+                     "transform": {"translate": [0.2, 1.3, 0.1], "rotate": [30, 0, 20]},
+                     "shadow": "occluder"})"};
+
+// closed_form.json with the tilted box, rendered with the technique block TECHNIQUE.
+penumbra::output::Image tiltedBox(const std::string& technique) {
+    return renderScene("closed_form.json", {kTiltedBox, {"technique", technique}});
+}
+
 }  // namespace
 
 TEST(SsmGL, MatchesReferenceOnFloatingOccluder) {
@@ -81,15 +93,9 @@ TEST(SsmGL, ErrorFallsWithMapSizeThenLevelsOff) {
 TEST(SsmGL, TwoSidedHelpsOnABox) {
     // A tilted box: its far faces, hidden from the light's centre, shadow parts of the floor
     // that the near faces' micro-patches miss (3.5, Fig. 10).
-    const std::vector<penumbra::scene::Override> box = {
-        {"objects.1", R"({"name": "occluder", "box": {"size": [0.6, 0.8, 0.6]},
-                          "transform": {"translate": [0.2, 1.3, 0.1], "rotate": [30, 0, 20]},
-                          "shadow": "occluder"})"}};
-    auto ref = renderScene("closed_form.json", box);
-    auto with = [&](const std::string& extra) {
-        auto o = box;
-        o.push_back({"technique", ssm(R"(, "map_size": 64, "ssm_size": 64)" + extra)});
-        return renderScene("closed_form.json", o);
+    auto ref = renderScene("closed_form.json", {kTiltedBox});
+    auto with = [](const std::string& extra) {
+        return tiltedBox(ssm(R"(, "map_size": 64, "ssm_size": 64)" + extra));
     };
     const double one = shadowMae(ref, with("")),
                  two = shadowMae(ref, with(R"(, "two_sided": true)"));
@@ -97,18 +103,43 @@ TEST(SsmGL, TwoSidedHelpsOnABox) {
     EXPECT_LT(two, one);
 }
 
-TEST(SsmGL, CpuPathEqualsGpuPath) {
-    auto gpu = renderScene("closed_form.json",
-                           {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64)")}});
-    auto cpu =
-        renderScene("closed_form.json",
-                    {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64, "path": "cpu")")}});
-    const auto& vg = channel(gpu, "visibility");
-    const auto& vc = channel(cpu, "visibility");
-    const double max = penumbra::testing::maxAbsDifference(vg, vc);
-    // The same micro-patches in the same order, blended in an order the rasteriser may change:
-    // float sums of up to a few thousand terms differ by a few ulps of 1.
-    EXPECT_LE(max, 1e-5);
+TEST(SsmGL, CpuPathEqualsGpuPathToTheByte) {
+    // The GPU path lists the micro-patches in the CPU path's row-major order (compact.comp's
+    // prefix sum over groups), and the splats blend in list order, so both paths sum the same
+    // terms in the same order: equal bits, run after run. Under the earlier atomic-counter list
+    // they differed in the last bits (4e-7 on the tilted box).
+    auto with = [](const char* path) {
+        return tiltedBox(
+            ssm(R"(, "map_size": 64, "ssm_size": 64, "path": ")" + std::string(path) + R"(")"));
+    };
+    const auto gpu = with("gpu"), cpu = with("cpu"), again = with("gpu");
+    for (const char* c : {"visibility", "R", "G", "B"}) {
+        EXPECT_EQ(penumbra::testing::maxAbsDifference(channel(gpu, c), channel(cpu, c)), 0.0) << c;
+        EXPECT_EQ(penumbra::testing::maxAbsDifference(channel(gpu, c), channel(again, c)), 0.0)
+            << c;
+    }
+}
+
+TEST(SsmGL, AFlatOccluderAtAnyHeightCastsItsShadow) {
+    // A square parallel to the light lies at the occluder window's nearest depth, and the floor
+    // at the receivers'; the windows' near planes sat exactly there, so at most heights the
+    // rasteriser clipped the square (no micro-patch: a lit floor) or, with layers 1, the floor
+    // (no receiver). The windows now keep a margin before their nearest depth.
+    for (const char* y : {"1.0", "1.4"})
+        for (const char* layers : {"1", "4"}) {
+            const penumbra::scene::Override moved = {"objects.1.transform.translate",
+                                                     std::string("[0.2, ") + y + ", 0.1]"};
+            const auto ref = renderScene("closed_form.json", {moved});
+            const auto img = renderScene(
+                "closed_form.json",
+                {moved,
+                 {"technique",
+                  ssm(R"(, "map_size": 64, "ssm_size": 64, "layers": )" + std::string(layers))}});
+            const double mae = shadowMae(ref, img);
+            std::printf("ssm 64, square at height %s, layers %s: shadow-region MAE %.4f\n", y,
+                        layers, mae);
+            EXPECT_LE(mae, 0.02) << "height " << y << ", layers " << layers;
+        }
 }
 
 TEST(SsmGL, TwoSidedEqualsOneSidedForAFlatOccluder) {
@@ -173,15 +204,8 @@ TEST(SsmGL, RectLightsOfEitherAspectMatchReference) {
 }
 
 TEST(SsmGL, ClippingToReceiversKeepsTheImage) {
-    const std::vector<penumbra::scene::Override> box = {
-        {"objects.1", R"({"name": "occluder", "box": {"size": [0.6, 0.8, 0.6]},
-                          "transform": {"translate": [0.2, 1.3, 0.1], "rotate": [30, 0, 20]},
-                          "shadow": "occluder"})"}};
-    auto with = [&](const char* clip) {
-        auto o = box;
-        o.push_back({"technique",
-                     ssm(R"(, "map_size": 64, "ssm_size": 64, "clip": )" + std::string(clip))});
-        return renderScene("closed_form.json", o);
+    auto with = [](const char* clip) {
+        return tiltedBox(ssm(R"(, "map_size": 64, "ssm_size": 64, "clip": )" + std::string(clip)));
     };
     auto clipped = with("true"), full = with("false");
     const auto& vc = channel(clipped, "visibility");

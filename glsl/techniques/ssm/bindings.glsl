@@ -12,6 +12,9 @@
 #define SSM_UNIT_RECEIVER_MAX_SOURCE 0
 #define SSM_UNIT_RECEIVER_MAX_LAYERS 1
 #define SSM_IMAGE_RECEIVER_MAX_TARGET 0
+// receiver_planes.comp
+#define SSM_UNIT_PLANES_LAYERS 0
+#define SSM_IMAGE_PLANES_TARGET 0
 // compact.comp
 #define SSM_UNIT_COMPACT_OCCLUDER 0
 // splat.vert and splat.frag
@@ -20,6 +23,7 @@
 #define SSM_UNIT_SPLAT_OCC_IDS 6
 #define SSM_UNIT_SPLAT_LAYER_DEPTHS 7
 #define SSM_UNIT_SPLAT_LAYER_IDS 8
+#define SSM_UNIT_SPLAT_PLANES 9
 // visibility.frag
 #define SSM_UNIT_VISIBILITY_POSITION 0
 #define SSM_UNIT_VISIBILITY_ID 1
@@ -30,6 +34,13 @@
 // Buffers
 #define SSM_BINDING_COUNTERS 3  // splat.vert's Counters
 #define SSM_BINDING_PATCHES 4   // splat.vert's and compact.comp's Patches
-#define SSM_BINDING_COMMAND 5   // compact.comp's Command (path gpu)
+#define SSM_BINDING_COMMAND 5   // receiver_planes.comp
+#define SSM_UNIT_PLANES_LAYERS 0
+#define SSM_IMAGE_PLANES_TARGET 0
+// compact.comp's Command (path gpu)
+#define SSM_BINDING_RUNS 6      // receiver_planes.comp
+#define SSM_UNIT_PLANES_LAYERS 0
+#define SSM_IMAGE_PLANES_TARGET 0
+// compact.comp's Runs (path gpu)
 
 #endif

@@ -31,21 +31,47 @@ void Ssm::buildReceiverMax() {
     glUseProgram(0);
 }
 
-// Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
-// makes their count the splat's instance count (no readback).
+// Each used receiver layer's tangent plane per texel (receiver_planes.comp).
+void Ssm::buildReceiverPlanes(const LightWindow& soft) {
+    const auto& p = planes_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(SSM_UNIT_PLANES_LAYERS, receiver_layers_->depth.id());
+    glBindImageTexture(SSM_IMAGE_PLANES_TARGET, receiver_planes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA16F);
+    gl::setUniform(p, "u_ssm_lo", soft.lo);
+    gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
+    gl::setUniform(p, "u_receiver_near", soft.near);
+    gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
+    const auto groups = static_cast<GLuint>((ssm_size_ + 7) / 8);
+    glDispatchCompute(groups, groups, static_cast<GLuint>(std::max(used_layers_, 1)));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+// Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
+// order, and makes their count the splat's instance count (no readback): compact.comp's three
+// phases over runs of consecutive texels (count per run, first slot per run, ordered writes).
 void Ssm::compact(const LightWindow& occ, int side) {
     const DrawCommand reset{4, 0, 0, 0};
     glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
-    glUseProgram(compact_program_.id());
+    const auto& p = compact_program_;
+    glUseProgram(p.id());
     glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, occluder_maps_[size_t(side)]->depth.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                      gpu_patches_[size_t(side)].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
-    gl::setUniform(compact_program_, "u_empty", side ? 0.0f : 1.0f);
-    gl::setUniform(compact_program_, "u_occ_near", occ.near);
-    gl::setUniform(compact_program_, "u_occ_range", occ.far - occ.near);
-    const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
-    glDispatchCompute(groups, groups, 1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_RUNS, compact_runs_.id());
+    gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_occ_near", occ.near);
+    gl::setUniform(p, "u_occ_range", occ.far - occ.near);
+    gl::setUniform(p, "u_run", compact_run_);
+    gl::setUniform(p, "u_runs", compact_run_count_);
+    const auto groups = static_cast<GLuint>((compact_run_count_ + 255) / 256);  // 256 per group
+    for (int phase = 0; phase < 3; ++phase) {
+        gl::setUniform(p, "u_phase", phase);
+        glDispatchCompute(phase == 1 ? 1 : groups, 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(0);
 }
@@ -69,6 +95,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());
     gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
     gl::setUniform(p, "u_light_half", 0.5f * light.size);

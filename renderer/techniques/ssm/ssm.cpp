@@ -61,6 +61,13 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
             gpu_patches_.push_back(gl::createBuffer("ssm micro-patches (gpu)"));
             glNamedBufferStorage(gpu_patches_.back().id(), bytes, nullptr, 0);
         }
+        // compact.comp's runs of consecutive texels: at most 65536, at least 16 texels each.
+        const int texels = map_size_ * map_size_;
+        compact_run_ = std::max(16, (texels + 65535) / 65536);
+        compact_run_count_ = (texels + compact_run_ - 1) / compact_run_;
+        compact_runs_ = gl::createBuffer("ssm compaction runs");
+        glNamedBufferStorage(compact_runs_.id(),
+                             GLsizeiptr(sizeof(std::uint32_t)) * compact_run_count_, nullptr, 0);
         command_ = gl::createBuffer("ssm splat command");
         glNamedBufferStorage(command_.id(), sizeof(DrawCommand), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
@@ -89,6 +96,10 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+    planes_program_ =
+        gl::buildProgram("ssm receiver planes", {"techniques/ssm/receiver_planes.comp"});
+    receiver_planes_ =
+        gl::createTexture2DArray(GL_RGBA16F, ssm_size_, ssm_size_, layers_, "ssm receiver planes");
     counters_ = gl::createBuffer("ssm counters");
     glNamedBufferStorage(counters_.id(), 2 * sizeof(std::uint32_t), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
@@ -100,7 +111,8 @@ void Ssm::render(frame::FrameContext& ctx) {
     passes::Bounds receiver_bounds;
     for (const auto& o : ctx.gpu.objects())
         if (receives(o.shadow)) receiver_bounds.extend(o.world_bounds);
-    const LightWindow occ = passes::occluderWindow(light, ctx.gpu.casterBounds());
+    const LightWindow occ =
+        ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBounds()));
     const LightWindow soft = ssm::softShadowWindow(light, occ, receiver_bounds);
     const bool shadowed = !occ.empty() && !soft.empty();
     const int sides = two_sided_ ? 2 : 1;
@@ -118,6 +130,7 @@ void Ssm::render(frame::FrameContext& ctx) {
             used_layers_ = receiver_layers_->render(ctx.gpu, *peel_pass_, receiverFilter(), light,
                                                     depthView(light, soft), gap);
             if (clip_) buildReceiverMax();
+            if (layers_ > 1) buildReceiverPlanes(soft);
         });
         const std::uint32_t zero[2] = {0, 0};
         glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero);

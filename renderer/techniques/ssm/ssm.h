@@ -113,8 +113,13 @@ private:
     // level: a splat quad into layer k is culled where layer k has no receiver under it.
     void buildReceiverMax();
 
-    // Appends side SIDE's non-empty occluder texels to its micro-patch list on the GPU and
-    // makes their count the splat's instance count (no readback).
+    // Each used receiver layer's tangent plane per texel (receiver_planes.comp), for the splat's
+    // test of a micro-patch over its own object's surface.
+    void buildReceiverPlanes(const LightWindow& soft);
+
+    // Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
+    // order (deterministic, as the CPU path's), and makes their count the splat's instance
+    // count (no readback).
     void compact(const LightWindow& occ, int side);
 
     // Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
@@ -132,16 +137,20 @@ private:
     int layers_;
     int used_layers_ = 0;  // receiver layers holding a receiver this frame
     std::unique_ptr<passes::LightDepthPass> depth_pass_, peel_pass_;
-    gl::Program splat_program_, visibility_program_, max_program_, compact_program_;
+    gl::Program splat_program_, visibility_program_, max_program_, compact_program_,
+        planes_program_;
     gl::Texture receiver_max_;
+    gl::Texture receiver_planes_;  // RGBA16F array: the receiver layers' normals
     int receiver_levels_ = 1;
     std::vector<std::unique_ptr<passes::LightDepthTarget>> occluder_maps_;
     std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
     std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
     gl::Texture receives_;
     gl::Buffer counters_;
-    gl::Buffer command_;                   // path=gpu: the splat's indirect draw
-    std::vector<gl::Buffer> gpu_patches_;  // path=gpu: the micro-patch list of each side
+    gl::Buffer command_;       // path=gpu: the splat's indirect draw
+    gl::Buffer compact_runs_;  // path=gpu: each run's patch count, then first slot
+    int compact_run_ = 16, compact_run_count_ = 0;  // texels per run, runs (compact.comp)
+    std::vector<gl::Buffer> gpu_patches_;           // path=gpu: the micro-patch list of each side
     gl::VertexArray empty_vao_;
     gl::DynamicBuffer patches_buffer_{"ssm micro-patches"};
     std::vector<float> scratch_;

@@ -90,10 +90,16 @@ SoftShadowTarget::SoftShadowTarget(int size, int layers, GLenum format, const ch
     }
 }
 
+passes::LightWindow withNearMargin(passes::LightWindow w) {
+    if (w.empty()) return w;
+    w.near = std::max(w.near * (1.0f - 1e-4f) - 1e-5f, w.far * 1e-4f);
+    return w;
+}
+
 passes::LightWindow softShadowWindow(const scene::RectLight& light,
                                      const passes::LightWindow& occluders,
                                      const passes::Bounds& receivers) {
-    passes::LightWindow r = passes::windowOf(light, receivers);
+    passes::LightWindow r = withNearMargin(passes::windowOf(light, receivers));
     if (r.empty() || occluders.empty()) return {};
     const float k = std::max(1.0f / occluders.near - 1.0f / r.far, 0.0f);
     const glm::vec2 grow = 0.5f * light.size * k;

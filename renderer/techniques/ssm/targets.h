@@ -46,6 +46,11 @@ struct SoftShadowTarget {
     SoftShadowTarget(int size, int layers, GLenum format, const char* label);
 };
 
+// W with its near plane pulled toward the light by the margin its far plane has (windowOf), so
+// that a surface parallel to the light at W's nearest depth (a floor, a flat occluder) is not
+// clipped away by the near plane.
+passes::LightWindow withNearMargin(passes::LightWindow w);
+
 // The soft-shadow-map window: the occluder window grown by the widest penumbra (section 3.3,
 // half the light over the nearest occluder depth, less its value at the farthest receiver),
 // clipped to the receivers' window, with the receivers' depth range.
