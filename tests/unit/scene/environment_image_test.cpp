@@ -83,7 +83,8 @@ TEST(EnvironmentImage, SceneNamesTheKeyAndPath) {
                   (test::scratchDir() / "scene.json").string() + ": environment.image: " + junk +
                       ": cannot read image");
     doc["environment"] = {{"image", (test::dataDir() / "sky.exr").string()}, {"intensity", -1}};
-    expectMessage(inputErrorOf([&] { test::loadDoc(doc); }), "environment.intensity: expected a number >= 0");
+    expectMessage(inputErrorOf([&] { test::loadDoc(doc); }),
+                  "environment.intensity: expected a number >= 0");
 }
 
 }  // namespace
