@@ -34,13 +34,7 @@
 // Buffers
 #define SSM_BINDING_COUNTERS 3  // splat.vert's Counters
 #define SSM_BINDING_PATCHES 4   // splat.vert's and compact.comp's Patches
-#define SSM_BINDING_COMMAND 5   // receiver_planes.comp
-#define SSM_UNIT_PLANES_LAYERS 0
-#define SSM_IMAGE_PLANES_TARGET 0
-// compact.comp's Command (path gpu)
-#define SSM_BINDING_RUNS 6      // receiver_planes.comp
-#define SSM_UNIT_PLANES_LAYERS 0
-#define SSM_IMAGE_PLANES_TARGET 0
-// compact.comp's Runs (path gpu)
+#define SSM_BINDING_COMMAND 5   // compact.comp's Command (path gpu)
+#define SSM_BINDING_RUNS 6      // compact.comp's Runs (path gpu)
 
 #endif
