@@ -19,6 +19,7 @@
 #include <new>
 
 #include "renderer/core/error.h"
+#include "renderer/core/exr_header.h"
 #include "renderer/core/memory_limit.h"
 #include "renderer/core/regular_file.h"
 #include "renderer/output/exr.h"
@@ -54,12 +55,17 @@ void checkExrFile(const std::filesystem::path& path, const std::string& where) {
     if (const std::string why = notRegularFileReason(path); !why.empty())
         throw UnreadableImage(where + why);
 
-    if (!std::ifstream(path, std::ios::binary))
-        throw UnreadableImage(where + "cannot open: " + std::strerror(errno));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw UnreadableImage(where + "cannot open: " + std::strerror(errno));
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multiPart))
         throw UnreadableImage(where + "not an OpenEXR file");
     if (deep) throw UnreadableImage(where + "deep OpenEXR images are not supported");
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error) throw UnreadableImage(where + "cannot read its size: " + error.message());
+    if (const std::string why = exrHeaderProblem(in, size); !why.empty())
+        throw UnreadableImage(where + why);
 }
 
 // HEADER's channels (none subsampled) with their types, in reading order.

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 
 #include <fcntl.h>
@@ -14,6 +15,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "renderer/core/error.h"
+#include "renderer/core/exr_header.h"
 #include "renderer/core/json_bounds.h"
 #include "renderer/core/memory_limit.h"
 #include "renderer/core/regular_file.h"
@@ -111,6 +113,14 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
     if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
         throw InputError(label + ": expected " + std::string(expected));
     requireRegularFile(path, label);
+    if (extension == ".exr") {
+        std::ifstream in(path, std::ios::binary);
+        std::error_code error;
+        const std::uintmax_t size = std::filesystem::file_size(path, error);
+        const std::string why = in && !error ? exrHeaderProblem(in, size) : "";
+        if (!why.empty())  // else OpenImageIO says why it cannot open it
+            throw InputError(label + ": cannot read image: " + why);
+    }
 
     const QuietStderr quiet;
     auto input = OIIO::ImageInput::open(path.string());
@@ -121,6 +131,9 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
 FloatImage readFloatImageFromMemory(const unsigned char* bytes, std::size_t size,
                                     std::string_view extension, const std::string& label,
                                     int max_size, int channels) {
+    if (extension == ".exr")
+        if (const std::string why = exrHeaderProblem(bytes, size); !why.empty())
+            throw InputError(label + ": cannot read image: " + why);
     OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes), size);
     const QuietStderr quiet;
     auto input = OIIO::ImageInput::open("memory" + std::string(extension), nullptr, &proxy);

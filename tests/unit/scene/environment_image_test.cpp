@@ -74,6 +74,17 @@ TEST(EnvironmentImage, Refusals) {
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": is a folder");
 }
 
+// An OpenEXR header attribute that declares more bytes than the file holds is refused before
+// the decoder allocates it (a 1 KB file claiming 800 MB cost 840 MB and seconds).
+TEST(EnvironmentImage, AnExrAttributeLargerThanTheFileIsRefused) {
+    const std::string bytes = std::string("\x76\x2f\x31\x01\x02\x00\x00\x00", 8) +
+                              std::string("Software\0string\0\x00\x00\x00\x30", 20) + "x";
+    test::writeFile("claims.exr", bytes);
+    const auto path = test::scratchDir() / "claims.exr";
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(path); }),
+                  path.string() + ": cannot read image: header attribute 'Software' declares");
+}
+
 TEST(EnvironmentImage, SceneNamesTheKeyAndPath) {
     nlohmann::json doc = test::minimalScene();
     doc["environment"] = {{"image", "junk.exr"}};
