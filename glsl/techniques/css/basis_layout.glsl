@@ -7,5 +7,7 @@
 #endif
 #define CSS_PAIRS ((ORDER + 1) / 2)  // RGBA layers per basis set: two k per layer
 #define CSS_LAYERS (2 * CSS_PAIRS + 1)
-float cssCoefficient(int k) { return 3.14159265358979 * float(2 * k - 1); }
+float cssCoefficient(int k) {
+    return 3.14159265358979 * float(2 * k - 1);
+}
 #endif  // PENUMBRA_CSS_BASIS_LAYOUT_GLSL

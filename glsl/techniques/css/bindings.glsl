@@ -7,10 +7,11 @@
 // basis.comp
 #define CSS_UNIT_BASIS_DEPTH 0
 #define CSS_IMAGE_BASIS 0
-// visibility.frag
+// visibility.frag, visibility_coarse.frag, visibility_fine.frag
 #define CSS_UNIT_VISIBILITY_POSITION 0
 #define CSS_UNIT_VISIBILITY_BASIS 1         // mipmapped basis, or its summed-area table
 #define CSS_UNIT_VISIBILITY_BASIS_SEARCH 3  // the same texture through the search sampler
 #define CSS_UNIT_VISIBILITY_ID 4
+#define CSS_UNIT_VISIBILITY_COARSE 5  // visibility_fine.frag: the coarse samples
 
 #endif

@@ -1,7 +1,8 @@
 // `css`: convolution soft shadows (Annen et al. 2008). A light-centred shadow map is expanded
 // into Fourier basis images (CSM) and depth-weighted ones (CSM-Z), prefiltered by mipmaps or
 // summed-area tables; each pixel finds its average blocker depth and filters the shadow test
-// with a kernel of the penumbra's width (glsl/techniques/css/visibility.frag).
+// with a kernel of the penumbra's width (glsl/techniques/css/visibility.glsl); with
+// `interpolate`, at every other pixel first and at the rest only where interpolation is unsafe.
 #include <array>
 #include <cmath>
 #include <memory>
@@ -29,6 +30,7 @@ public:
     void prepare(const gl::ContextInfo&, const passes::GpuScene&) override {
         maps_.reset();
         programs_ = {};
+        coarse_ = {};
     }
 
     void render(frame::FrameContext& ctx) override {
@@ -59,21 +61,40 @@ private:
     // Maps and programs on first use: a scene of square lights never builds SAT resources.
     void ensureResources(CsmMaps::Filter filter) {
         const bool sat = filter == CsmMaps::Filter::Sat;
-        gl::Program& program = programs_[sat ? 1 : 0];
+        Programs& programs = programs_[sat ? 1 : 0];
         if (!maps_ || (sat && !has_sat_) || (!sat && !has_mipmap_)) {
             has_sat_ |= sat;
             has_mipmap_ |= !sat;
             maps_ = std::make_unique<CsmMaps>(settings_.map_size, settings_.order, has_mipmap_,
                                               has_sat_);
         }
-        if (!program) {
+        if (!programs.every) {
             // ORDER, MAX_ANISO, MIP_TAPS, SEARCH_STEPS from the table; FILTER_SAT per light.
             gl::Defines defines = gl::paramDefines(css::kCssParams, params_);
             defines.emplace_back("FILTER_SAT", sat ? "1" : "0");
-            program = gl::buildProgram("css visibility",
-                                       {"passes/fullscreen.vert", "techniques/css/visibility.frag"},
-                                       defines);
+            const auto build = [&](const char* label, const char* fragment) {
+                return gl::buildProgram(label, {"passes/fullscreen.vert", fragment}, defines);
+            };
+            programs.every = build("css visibility", "techniques/css/visibility.frag");
+            if (settings_.interpolate > 0.0f) {
+                programs.coarse =
+                    build("css visibility coarse", "techniques/css/visibility_coarse.frag");
+                programs.fine = build("css visibility fine", "techniques/css/visibility_fine.frag");
+            }
         }
+    }
+
+    // The target of the coarse samples (every other pixel of a WIDTH x HEIGHT image) and the
+    // stencil of the pixels left to evaluate.
+    void ensureCoarse(int width, int height) {
+        const int w = (width + 1) / 2, h = (height + 1) / 2;
+        if (coarse_.texture && coarse_.width == w && coarse_.height == h) return;
+        coarse_ = {gl::createTexture2D(GL_RGBA32F, w, h, "css coarse samples"),
+                   gl::createFramebuffer("css coarse samples"),
+                   gl::createTexture2D(GL_DEPTH24_STENCIL8, width, height, "css evaluated pixels"),
+                   w, h};
+        glNamedFramebufferTexture(coarse_.fbo.id(), GL_COLOR_ATTACHMENT0, coarse_.texture.id(), 0);
+        passes::checkFramebuffer(coarse_.fbo, "css coarse samples");
     }
 
     void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
@@ -87,7 +108,37 @@ private:
         if (w.empty()) return;  // no caster in front of the light
         glDisable(GL_BLEND);
         glDisable(GL_DEPTH_TEST);
-        const gl::Program& p = programs_[filter == CsmMaps::Filter::Sat ? 1 : 0];
+        const Programs& programs = programs_[filter == CsmMaps::Filter::Sat ? 1 : 0];
+        if (settings_.interpolate <= 0.0f) {
+            draw(ctx, programs.every, light, w, range, filter);
+            return;
+        }
+        // Every other pixel; the rest interpolated where safe (stencil 0), else evaluated.
+        const GLuint output = ctx.bindOutput();
+        ensureCoarse(ctx.gbuffer.width(), ctx.gbuffer.height());
+        glBindFramebuffer(GL_FRAMEBUFFER, coarse_.fbo.id());
+        glViewport(0, 0, coarse_.width, coarse_.height);
+        draw(ctx, programs.coarse, light, w, range, filter);
+        glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, coarse_.stencil.id(), 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, output);
+        glViewport(0, 0, ctx.gbuffer.width(), ctx.gbuffer.height());
+        const GLint one = 1;
+        glClearBufferiv(GL_STENCIL, 0, &one);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_COARSE, coarse_.texture.id());
+        draw(ctx, programs.fine, light, w, range, filter);
+        glStencilFunc(GL_EQUAL, 1, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        draw(ctx, programs.every, light, w, range, filter);
+        glDisable(GL_STENCIL_TEST);
+        glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+    }
+
+    // One full-viewport draw of P (a visibility program) into the bound framebuffer.
+    void draw(frame::FrameContext& ctx, const gl::Program& p, const scene::RectLight& light,
+              const passes::LightWindow& w, const css::DepthRange& range, CsmMaps::Filter filter) {
         glUseProgram(p.id());
         glBindTextureUnit(CSS_UNIT_VISIBILITY_POSITION, ctx.gbuffer.position().id());
         glBindTextureUnit(CSS_UNIT_VISIBILITY_BASIS, maps_->filtered(filter).id());
@@ -105,7 +156,8 @@ private:
         gl::setUniform(p, "u_depth_near", range.near);
         gl::setUniform(p, "u_depth_far", range.far);
         gl::setUniform(p, "u_map_size", static_cast<float>(settings_.map_size));
-        gl::setParamUniforms(p, css::kCssParams, params_);  // ring_*, sharpen_*, self_exclude
+        // ring_*, sharpen_*, self_exclude, interpolate
+        gl::setParamUniforms(p, css::kCssParams, params_);
         fullscreen_.draw();
         glBindSampler(CSS_UNIT_VISIBILITY_BASIS_SEARCH, 0);
         glUseProgram(0);
@@ -115,7 +167,16 @@ private:
     css::CssSettings settings_;
     std::unique_ptr<CsmMaps> maps_;
     bool has_mipmap_ = false, has_sat_ = false;
-    std::array<gl::Program, 2> programs_;  // visibility: mipmap, SAT
+    struct Programs {
+        gl::Program every, coarse, fine;  // every pixel; with `interpolate`, its two passes
+    };
+    std::array<Programs, 2> programs_;  // mipmap, SAT
+    struct Coarse {
+        gl::Texture texture;
+        gl::Framebuffer fbo;
+        gl::Texture stencil;  // full size: 1 where visibility.frag evaluates
+        int width = 0, height = 0;
+    } coarse_;
     passes::Fullscreen fullscreen_;
 };
 

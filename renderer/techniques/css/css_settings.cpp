@@ -22,6 +22,7 @@ CssSettings cssSettings(const Params& p) {
     s.sharpen_a = static_cast<float>(p.get(kSharpenA));
     s.sharpen_b = static_cast<float>(p.get(kSharpenB));
     s.self_exclude = static_cast<float>(p.get(kSelfExclude));
+    s.interpolate = static_cast<float>(p.get(kInterpolate));
     return s;
 }
 
