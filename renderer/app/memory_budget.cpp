@@ -24,14 +24,17 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
                                        const techniques::TechniqueInfo& technique,
                                        const Params& params, int frames_in_flight) {
     const u64 pixels = product({static_cast<u64>(s.image.width), static_cast<u64>(s.image.height)});
-    const u64 lights = std::max<u64>(1, s.lights.size());
+    u64 lights = std::max<u64>(1, s.lights.size());
+    if (s.environment && technique.environment && technique.environment_lights_max)
+        lights += static_cast<u64>(std::max(0, technique.environment_lights_max(params)));
     std::vector<MemoryTerm> out;
     // G-buffer 56 (position 16 and the geometric normal 8 of it), beauty and visibility 20, per
     // light a visibility layer 16 and diagnostics 16; the readback and the EXR image about 17 float
     // channels each.
     out.push_back({"image.width", "the G-buffer position texture", product({pixels, 16}), true});
     out.push_back({"image.width", "the G-buffer and shading targets", product({pixels, 40 + 20})});
-    out.push_back({"image.width", "the visibility layers", product({pixels, lights, 16}), true});
+    out.push_back({"image.width", "the visibility layers of " + std::to_string(lights) + " lights",
+                   product({pixels, lights, 16}), true});
     out.push_back({"image.width", "the diagnostic layers", product({pixels, lights, 16})});
     const u64 in_flight = static_cast<u64>(std::max(frames_in_flight, 1));
     out.push_back({"image.width",

@@ -62,6 +62,10 @@ struct TechniqueInfo {
     // A bound the parameter table's ranges cannot say (e.g. a product of two keys): the message
     // "technique.<key>: ..." when PARAMS exceed it, else "". nullptr: none.
     std::string (*limit_error)(const Params&) = nullptr;
+    // The most lights environment() makes for PARAMS, an irradiance layer counted as one: each
+    // is a visibility and a diagnostic layer of the frame, which the memory budget counts before
+    // anything is allocated (512 sampled directions at 1024 x 768 are 6.4 GB). nullptr: none.
+    int (*environment_lights_max)(const Params&) = nullptr;
 };
 
 }  // namespace penumbra::frame

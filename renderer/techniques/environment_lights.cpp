@@ -125,4 +125,12 @@ EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& 
     return out;
 }
 
+int fittedEnvironmentLightsMax(const Params& p) {
+    return p.get(kEnvLights);
+}
+
+int sampledEnvironmentLightsMax(const Params& p) {
+    return p.get(kEnvSamples) + 1;  // and, where a technique asks for it, an irradiance layer
+}
+
 }  // namespace penumbra::techniques

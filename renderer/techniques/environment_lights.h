@@ -50,5 +50,8 @@ EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s
 // `reference`: P's env_samples directions drawn by luminance energy from the cube faces (stratified
 // in the energy's cumulative distribution), each a small light carrying an equal share.
 EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& s);
+// The most lights each makes (TechniqueInfo::environment_lights_max).
+int fittedEnvironmentLightsMax(const Params& p);
+int sampledEnvironmentLightsMax(const Params& p);
 
 }  // namespace penumbra::techniques

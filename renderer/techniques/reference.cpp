@@ -77,6 +77,8 @@ const TechniqueInfo kReferenceTechnique = {
     [](const Params& p, std::uint64_t) {
         const int n = p.get(kSamples);
         return MemoryTerms{shadowMapArrayTerm(p, std::min(p.get(kBatch), n * n))};
-    }};
+    },
+    nullptr,
+    sampledEnvironmentLightsMax};
 
 }  // namespace penumbra::techniques

@@ -26,6 +26,11 @@ expect_exit 2 "small.json: technique.order: the basis images \(4096\^2 x 17 RGBA
 # ssm_splat_bound: map 4096 x ssm 4096 ran past 300 s.
 expect_exit 2 "small.json: technique.ssm_size: map_size x ssm_size = 4096 x 4096 exceeds" -- \
     render -t ssm -D technique.map_size=4096 -D technique.ssm_size=4096
+# env_reference_1024: 513 environment lights' visibility layers (6.4 GB) were GL_OUT_OF_MEMORY,
+# exit 1: each light the technique makes of the environment is counted.
+expect_exit 2 "environment.json: image.width: .*the visibility layers of 514 lights" -- \
+    "$PENUMBRA" render "$PENUMBRA_SOURCE_DIR/scenes/bench/environment.json" -t reference \
+    --size 1024x768 -o out.exr --memory-limit 8G
 expect_exit 2 "^penumbra: render: --memory-limit: expected a size" -- render --memory-limit lots
 [ ! -e out.exr ] || fail "a refused render left output"
 

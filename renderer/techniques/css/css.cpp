@@ -188,6 +188,8 @@ const TechniqueInfo kCssTechnique = {
     css::kCssParams,
     [](const Params& p) -> std::unique_ptr<Technique> { return std::make_unique<Css>(p); },
     fittedEnvironmentLights,
-    css::memoryTerms};
+    css::memoryTerms,
+    nullptr,
+    fittedEnvironmentLightsMax};
 
 }  // namespace penumbra::techniques
