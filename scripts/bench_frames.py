@@ -4,7 +4,9 @@ one process: wall time per frame against the sum of the passes per frame (readba
 it is part of the overhead), their ratio, and the process's time to its first pass (timing
 JSON `process.ms_to_first_pass`), with the EXR writer pipelined (the default) and
 serial (PENUMBRA_SERIAL_WRITES=1), and the time to first pass with a cold and a warm program
-cache (a private cache folder under the bench's output folder).
+cache (a private cache folder under the bench's output folder). The `startup` suite: the
+process's start-up alone (shared libraries, `--version`, time to the first pass), beside an
+older binary (--baseline) when given.
 """
 import json
 import os
@@ -44,12 +46,12 @@ def cpu_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def sequence(b, scene, frames, env, tag):
-    """One process rendering FRAMES frames of SCENE: (wall s, per-frame pass sums, readbacks,
-    ms to first pass, CPU s of the process)."""
+def sequence(b, scene, frames, env, tag, binary=None):
+    """One process (BINARY, else this build's) rendering FRAMES frames of SCENE: (wall s,
+    per-frame pass sums, readbacks, ms to first pass, CPU s of the process)."""
     folder = os.path.join(b.out, f"frames_{tag}")
     shutil.rmtree(folder, ignore_errors=True)
-    cmd = [b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f", f"1-{frames}", "-o",
+    cmd = [binary or b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f", f"1-{frames}", "-o",
            os.path.join(folder, "f.####.exr"), "--quiet"]
     start, cpu = time.monotonic(), cpu_seconds()
     subprocess.run(cmd, check=True, env=env)
@@ -103,3 +105,38 @@ def frames(b):
             firsts.append(sequence(b, scene, 1, dict(base, **extra), "first")[3])
         print(f"{label:<20}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
               f"{statistics.median(firsts):>16.1f}")
+
+
+def shared_libraries(binary):
+    """How many shared libraries the dynamic loader maps for BINARY (`ldd` lines)."""
+    r = subprocess.run(["ldd", binary], capture_output=True, text=True, check=True)
+    return len(r.stdout.splitlines())
+
+
+def startup(b):
+    """The process's start-up (`startup` suite): shared libraries, wall time of `--version`,
+    and `process.ms_to_first_pass` and wall time of a one-frame render with warm caches, for
+    this build and for --baseline BINARY when given, alternated in one run."""
+    scene = stretched_walk(b.out, 2)
+    base = dict(os.environ, XDG_CACHE_HOME=os.path.join(b.out, "startup_cache"))
+    binaries = [("this build", b.binary)]
+    if b.args.baseline:
+        binaries.insert(0, ("baseline", os.path.abspath(b.args.baseline)))
+    rows = {label: [] for label, _ in binaries}
+    for label, binary in binaries:  # warm the program and Mesa caches, untimed
+        sequence(b, scene, 1, base, "startup", binary)
+    for _ in range(b.repeat):
+        for label, binary in binaries:
+            start = time.monotonic()
+            subprocess.run([binary, "--version"], check=True, stdout=subprocess.DEVNULL)
+            version_ms = (time.monotonic() - start) * 1e3
+            wall, _, _, first, _ = sequence(b, scene, 1, base, "startup", binary)
+            rows[label].append((version_ms, first, wall * 1e3))
+    print(f"\nstartup: {b.size}, one `hard` frame of scenes/walk.json's animation, warm program "
+          f"and Mesa caches, median of {b.repeat} (binaries alternated)")
+    print(f"{'binary':<14}{'libraries':>10}{'--version ms':>14}{'to 1st pass ms':>16}"
+          f"{'render wall ms':>16}  path")
+    for label, binary in binaries:
+        version_ms, first, wall = (statistics.median(c) for c in zip(*rows[label]))
+        print(f"{label:<14}{shared_libraries(binary):>10}{version_ms:>14.1f}{first:>16.1f}"
+              f"{wall:>16.1f}  {binary}")
