@@ -31,9 +31,9 @@ options:
                          out/<scene name>.####.exr)
       --timings PATTERN  timing JSON path (default: the EXR path with .json)
       --preview PATTERN  also write a tone-mapped PNG (.png)
-      --exr-compression C  zip (the default, zlib level 4; zip:1 to zip:9 from fastest to
-                         smallest), zips[:LEVEL] (a row a block), rle, none or piz; all
-                         lossless
+      --exr-compression C  zips (the default: zlib, a block per row, level 4; zips:1 to zips:9
+                         from fastest to smallest), zip[:LEVEL] (16 rows a block), rle,
+                         none or piz; all lossless
   -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2, frames 0 or more; -f1-3 works too
                          (default: the scene's animation range, else frame 0)
       --frame-from-env VAR  render the one frame named by environment variable VAR (a farm's

@@ -91,10 +91,9 @@ def frames(b):
     print(f"{'run':<26}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
           f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}{'MB':>7}")
     serial_env = {"PENUMBRA_SERIAL_WRITES": "1"}
-    modes = [("serial writes", serial_env, ())]
-    for c in b.args.exr_compression.split(","):
-        label = "pipelined writes" + ("" if c == "default" else f" {c}")
-        modes.append((label, {}, () if c == "default" else ("--exr-compression", c)))
+    modes = [("serial writes", serial_env, ()), ("pipelined writes", {}, ())]
+    for c in b.args.exr_compression.split(",") if b.args.exr_compression else ():
+        modes.append((f"pipelined writes {c}", {}, ("--exr-compression", c)))
     rows = {label: [] for label, _, _ in modes}
     for r in range(b.repeat):  # alternated, so all see the same machine
         for label, extra, options in modes:
@@ -133,7 +132,7 @@ def startup(b):
     """The process's start-up (`startup` suite): shared libraries, wall time of `--version`,
     and `process.ms_to_first_pass` and wall time of a one-frame render with warm caches, for
     this build and for --baseline BINARY when given, alternated in one run."""
-    scene = stretched_walk(b.out, 2)
+    scene = stretched_walk(b.out, 24)  # frame 1 of it
     base = dict(os.environ, XDG_CACHE_HOME=os.path.join(b.out, "startup_cache"))
     binaries = [("this build", b.binary)]
     if b.args.baseline:

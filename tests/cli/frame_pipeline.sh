@@ -21,8 +21,10 @@ for f in 1 2 3 4 5 6; do
 done
 
 # 1b. --exr-compression: every method is lossless (the default's pixels, to the bit, pipelined
-# and serial alike), named in the header; an unknown or lossy one is refused before rendering.
-for c in zip:1 zip:9 zips rle none piz; do
+# and serial alike), named in the header (the default: zips); an unknown or lossy one is
+# refused before rendering.
+oiiotool --info -v pipe/f.0002.exr | grep -q 'compression: "zips"' || fail "the default is not zips"
+for c in zip zip:1 zip:9 zips:1 rle none piz; do
     "$PENUMBRA" render "$scene" -f 2 -o "comp/$c.exr" --exr-compression "$c" --quiet
     "$PENUMBRA" compare pipe/f.0002.exr "comp/$c.exr" --fail 0 --warn 0 >/dev/null ||
         fail "--exr-compression $c changed the pixels"
