@@ -10,6 +10,7 @@
 #include "cli/run_flags.h"
 #include "renderer/app/render_job.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/output/exr.h"
 
 namespace penumbra::cli {
 namespace {
@@ -30,6 +31,9 @@ options:
                          out/<scene name>.####.exr)
       --timings PATTERN  timing JSON path (default: the EXR path with .json)
       --preview PATTERN  also write a tone-mapped PNG (.png)
+      --exr-compression C  zips (the default: zlib, a block per row, level 4; zips:1 to zips:9
+                         from fastest to smallest), zip[:LEVEL] (16 rows a block), rle,
+                         none or piz; all lossless
   -f, --frames SPEC      7, 1-120, 1-120:4, 1-3,5,9-20:2, frames 0 or more; -f1-3 works too
                          (default: the scene's animation range, else frame 0)
       --frame-from-env VAR  render the one frame named by environment variable VAR (a farm's
@@ -98,6 +102,12 @@ bool parseRenderOption(ArgCursor& c, app::RenderRequest& req) {
         req.timings = pattern(c, "--timings", *v);
     } else if ((v = c.option("", "--preview"))) {
         req.preview = pattern(c, "--preview", *v);
+    } else if ((v = c.option("", "--exr-compression"))) {
+        const auto compression = output::parseExrCompression(*v);
+        if (!compression)
+            c.fail("--exr-compression: '" + quoteText(*v) + "' is not " +
+                   output::kExrCompressionChoices);
+        req.exr_compression = *compression;
     } else if ((v = c.option("-f", "--frames"))) {
         req.frames = *v;
     } else if (c.flag("", "--list-frames")) {

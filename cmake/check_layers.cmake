@@ -14,7 +14,8 @@ set(_allowed_frame core scene output gl passes)
 set(_allowed_techniques core scene output gl passes frame)
 set(_allowed_app core scene output gl passes frame techniques)
 set(_allowed_cli core scene output gl passes frame techniques app)
-set(_layers core scene output gl passes frame techniques app cli)
+set(_allowed_oiio core)  # libpenumbra_oiio.so: core/oiio_module.h's interface only
+set(_layers core scene output gl passes frame techniques app cli oiio)
 
 if(NOT SOURCE_DIR)
     message(FATAL_ERROR "check_layers: pass -DSOURCE_DIR=<the source tree>")
@@ -59,7 +60,7 @@ endforeach()
 
 if(_problems)
     message(FATAL_ERROR "check_layers: includes that run back up the layers "
-            "(core < scene, output, gl < passes < frame < techniques < app < cli):\n${_problems}")
+            "(core < scene, output, gl < passes < frame < techniques < app < cli; core < oiio):\n${_problems}")
 endif()
 message(STATUS "check_layers: ${_count} files include only the layers below them")
 

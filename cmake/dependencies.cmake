@@ -23,10 +23,12 @@ if(_oiio_util_inc)
     set_target_properties(OpenImageIO::OpenImageIO_Util PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_util_inc}")
 endif()
 
+# OpenImageIO is not among them: it pulls in about 260 shared libraries, whose loading cost
+# every process a quarter of a second, so only libpenumbra_oiio.so links it (CMakeLists.txt).
 add_library(penumbra_deps INTERFACE)
 target_link_libraries(penumbra_deps INTERFACE
     nlohmann_json::nlohmann_json glm::glm OpenEXR::OpenEXR Imath::Imath
-    OpenImageIO::OpenImageIO embree PkgConfig::EGL PkgConfig::STB ${CMAKE_DL_LIBS})
+    embree PkgConfig::EGL PkgConfig::STB ${CMAKE_DL_LIBS})
 target_include_directories(penumbra_deps INTERFACE ${draco_INCLUDE_DIRS} /usr/include/stb)
 target_link_libraries(penumbra_deps INTERFACE draco::draco)
 target_compile_definitions(penumbra_deps INTERFACE GLM_FORCE_RADIANS)

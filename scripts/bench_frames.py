@@ -3,8 +3,11 @@ sequence of an animated scene (scenes/walk.json's animation stretched over --fra
 one process: wall time per frame against the sum of the passes per frame (readback excluded:
 it is part of the overhead), their ratio, and the process's time to its first pass (timing
 JSON `process.ms_to_first_pass`), with the EXR writer pipelined (the default) and
-serial (PENUMBRA_SERIAL_WRITES=1), and the time to first pass with a cold and a warm program
-cache (a private cache folder under the bench's output folder).
+serial (PENUMBRA_SERIAL_WRITES=1), pipelined also with each of --exr-compression's methods
+(render's flag of that name), and the time to first pass with a cold and a warm program
+cache (a private cache folder under the bench's output folder). The `startup` suite: the
+process's start-up alone (shared libraries, `--version`, time to the first pass), beside an
+older binary (--baseline) when given.
 """
 import json
 import os
@@ -44,25 +47,35 @@ def cpu_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def sequence(b, scene, frames, env, tag):
-    """One process rendering FRAMES frames of SCENE: (wall s, per-frame pass sums, readbacks,
-    ms to first pass, CPU s of the process)."""
+class Run:
+    """What one render process measured: wall and CPU s, per-frame pass sums and readbacks
+    (ms), ms to its first pass, and the mean EXR size (bytes)."""
+
+    def __init__(self, wall, cpu, passes, readbacks, first, exr_bytes):
+        self.wall, self.cpu, self.passes, self.readbacks = wall, cpu, passes, readbacks
+        self.first, self.exr_bytes = first, exr_bytes
+
+
+def sequence(b, scene, frames, env, tag, binary=None, options=()):
+    """One process (BINARY, else this build's) rendering FRAMES frames of SCENE with render
+    OPTIONS: a Run."""
     folder = os.path.join(b.out, f"frames_{tag}")
     shutil.rmtree(folder, ignore_errors=True)
-    cmd = [b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f", f"1-{frames}", "-o",
-           os.path.join(folder, "f.####.exr"), "--quiet"]
+    cmd = [binary or b.binary, "render", scene, "-t", "hard", "--size", b.size, "-f",
+           f"1-{frames}", "-o", os.path.join(folder, "f.####.exr"), "--quiet", *options]
     start, cpu = time.monotonic(), cpu_seconds()
     subprocess.run(cmd, check=True, env=env)
     wall, cpu = time.monotonic() - start, cpu_seconds() - cpu
-    passes, readbacks, first = [], [], None
+    passes, readbacks, first, exr_bytes = [], [], None, 0
     for i in range(1, frames + 1):
         with open(os.path.join(folder, f"f.{i:04d}.json"), encoding="utf-8") as f:
             t = json.load(f)
         passes.append(sum(p["ms"] for p in t["passes"] if p["name"] != "readback"))
         readbacks.append(sum(p["ms"] for p in t["passes"] if p["name"] == "readback"))
         first = t.get("process", {}).get("ms_to_first_pass", first)
-    shutil.rmtree(folder, ignore_errors=True)  # 240 frames at 1024x768 are about 2 GB
-    return wall, passes, readbacks, first, cpu
+        exr_bytes += os.path.getsize(os.path.join(folder, f"f.{i:04d}.exr"))
+    shutil.rmtree(folder, ignore_errors=True)  # 240 frames at 1024x768 are about 1.1 GB
+    return Run(wall, cpu, passes, readbacks, first, exr_bytes / frames)
 
 
 def frames(b):
@@ -74,24 +87,28 @@ def frames(b):
           f"median of {b.repeat} (goal: wall per frame <= 1.3x the sum of the passes)")
     print("(ratio: wall per frame / its own passes; vs serial: / the serial runs' passes, since "
           "on few cores the writer's work slows the passes it overlaps; cpu: the process's CPU "
-          "time per frame)")
-    print(f"{'run':<20}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
-          f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}")
-    modes = (("serial writes", {"PENUMBRA_SERIAL_WRITES": "1"}), ("pipelined writes", {}))
-    rows = {label: [] for label, _ in modes}
-    for r in range(b.repeat):  # alternated, so both see the same machine
-        for label, extra in modes:
-            wall, passes, readbacks, first, cpu = sequence(b, scene, n, dict(base, **extra),
-                                                           label[:4])
-            rows[label].append((wall * 1e3 / n, statistics.mean(passes),
-                                statistics.mean(readbacks), cpu * 1e3 / n,
-                                first if first is not None else float("nan")))
+          "time per frame; MB: EXR size per frame)")
+    print(f"{'run':<26}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
+          f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}{'MB':>7}")
+    serial_env = {"PENUMBRA_SERIAL_WRITES": "1"}
+    modes = [("serial writes", serial_env, ()), ("pipelined writes", {}, ())]
+    for c in b.args.exr_compression.split(",") if b.args.exr_compression else ():
+        modes.append((f"pipelined writes {c}", {}, ("--exr-compression", c)))
+    rows = {label: [] for label, _, _ in modes}
+    for r in range(b.repeat):  # alternated, so all see the same machine
+        for label, extra, options in modes:
+            run = sequence(b, scene, n, dict(base, **extra), "run", options=options)
+            rows[label].append((run.wall * 1e3 / n, statistics.mean(run.passes),
+                                statistics.mean(run.readbacks), run.cpu * 1e3 / n,
+                                run.first if run.first is not None else float("nan"),
+                                run.exr_bytes / 1e6))
     serial_passes = statistics.median(row[1] for row in rows["serial writes"])
-    for label, _ in modes:
-        per_frame, passes, readback, cpu, first = (statistics.median(c)
-                                                   for c in zip(*rows[label]))
-        print(f"{label:<20}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
-              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}")
+    for label, _, _ in modes:
+        per_frame, passes, readback, cpu, first, mb = (statistics.median(c)
+                                                       for c in zip(*rows[label]))
+        print(f"{label:<26}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
+              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}"
+              f"{mb:>7.2f}")
     # Time to first pass: a one-frame render, cold cache (emptied first) and warm, and with the
     # cache off.
     for label, extra, empty in (("cold program cache", {}, True), ("warm program cache", {}, False),
@@ -100,6 +117,41 @@ def frames(b):
         for r in range(b.repeat):
             if empty:
                 shutil.rmtree(cache, ignore_errors=True)
-            firsts.append(sequence(b, scene, 1, dict(base, **extra), "first")[3])
-        print(f"{label:<20}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
+            firsts.append(sequence(b, scene, 1, dict(base, **extra), "first").first)
+        print(f"{label:<26}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
               f"{statistics.median(firsts):>16.1f}")
+
+
+def shared_libraries(binary):
+    """How many shared libraries the dynamic loader maps for BINARY (`ldd` lines)."""
+    r = subprocess.run(["ldd", binary], capture_output=True, text=True, check=True)
+    return len(r.stdout.splitlines())
+
+
+def startup(b):
+    """The process's start-up (`startup` suite): shared libraries, wall time of `--version`,
+    and `process.ms_to_first_pass` and wall time of a one-frame render with warm caches, for
+    this build and for --baseline BINARY when given, alternated in one run."""
+    scene = stretched_walk(b.out, 24)  # frame 1 of it
+    base = dict(os.environ, XDG_CACHE_HOME=os.path.join(b.out, "startup_cache"))
+    binaries = [("this build", b.binary)]
+    if b.args.baseline:
+        binaries.insert(0, ("baseline", os.path.abspath(b.args.baseline)))
+    rows = {label: [] for label, _ in binaries}
+    for label, binary in binaries:  # warm the program and Mesa caches, untimed
+        sequence(b, scene, 1, base, "startup", binary)
+    for _ in range(b.repeat):
+        for label, binary in binaries:
+            start = time.monotonic()
+            subprocess.run([binary, "--version"], check=True, stdout=subprocess.DEVNULL)
+            version_ms = (time.monotonic() - start) * 1e3
+            run = sequence(b, scene, 1, base, "startup", binary)
+            rows[label].append((version_ms, run.first, run.wall * 1e3))
+    print(f"\nstartup: {b.size}, one `hard` frame of scenes/walk.json's animation, warm program "
+          f"and Mesa caches, median of {b.repeat} (binaries alternated)")
+    print(f"{'binary':<14}{'libraries':>10}{'--version ms':>14}{'to 1st pass ms':>16}"
+          f"{'render wall ms':>16}  path")
+    for label, binary in binaries:
+        version_ms, first, wall = (statistics.median(c) for c in zip(*rows[label]))
+        print(f"{label:<14}{shared_libraries(binary):>10}{version_ms:>14.1f}{first:>16.1f}"
+              f"{wall:>16.1f}  {binary}")

@@ -172,7 +172,8 @@ void handOver(const JobFrames& job, FrameWriter& writer, RenderedPlan&& p) {
     writer.submit(frame->plan->frame, [&job, frame] {
         frame::finishImage(frame->rendered);
         addJobAttributes(frame->rendered.image, job, frame->scene, frame->plan->frame);
-        writeFrameFiles(*frame->plan, frame->rendered.image, frame->report);
+        writeFrameFiles(*frame->plan, frame->rendered.image, frame->report,
+                        job.req.exr_compression);
     });
 }
 

@@ -10,6 +10,7 @@
 
 #include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
+#include "renderer/output/exr.h"
 #include "renderer/scene/scene_source.h"
 
 namespace penumbra::app {
@@ -22,6 +23,7 @@ struct RenderRequest {
     std::optional<std::string> output;       // -o PATTERN
     std::optional<std::string> timings;      // --timings PATTERN
     std::optional<std::string> preview;      // --preview PATTERN
+    output::ExrCompression exr_compression;  // --exr-compression
     std::optional<std::string> frames;       // -f SPEC
     std::string frames_flag = "--frames";    // where FRAMES came from, for messages
     bool farm_task = false;  // --frame-from-env: one task of many, so patterns need a #

@@ -27,11 +27,11 @@ std::string canonicalScenePath(const fs::path& scene) {
 }
 
 void writeFrameFiles(const FramePlan& plan, const output::Image& image,
-                     const output::FrameReport& report) {
+                     const output::FrameReport& report, const output::ExrCompression& compression) {
     AtomicGroup group;  // renames deferred to commit(), in the order written
     if (!plan.preview.empty()) output::writePngPreview(plan.preview, image);
     output::writeTimingJson(plan.timing, report);
-    output::writeExr(plan.exr, image);
+    output::writeExr(plan.exr, image, compression);
     group.commit();
 }
 

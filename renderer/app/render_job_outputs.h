@@ -6,6 +6,7 @@
 #include <string>
 
 #include "renderer/app/render_job_plan.h"
+#include "renderer/output/exr.h"
 #include "renderer/output/image.h"
 #include "renderer/output/timing.h"
 
@@ -16,9 +17,10 @@ namespace penumbra::app {
 // hash ("walk.json@0123456789abcdef").
 std::string canonicalScenePath(const std::filesystem::path& scene);
 
-// Writes PLAN's preview (if any), timing JSON and EXR under temporary names, then renames them
-// in that order: the EXR exists only when every file of the frame does. Throws RuntimeError.
+// Writes PLAN's preview (if any), timing JSON and EXR (with COMPRESSION) under temporary names,
+// then renames them in that order: the EXR exists only when every file of the frame does.
+// Throws RuntimeError.
 void writeFrameFiles(const FramePlan& plan, const output::Image& image,
-                     const output::FrameReport& report);
+                     const output::FrameReport& report, const output::ExrCompression& compression);
 
 }  // namespace penumbra::app

@@ -1,10 +1,6 @@
-// Contact sheets: see contact_sheet.h. Scaling, text and JPEG through OpenImageIO; PNG and EXR
-// through the project's own writers (preview.h, exr.h).
+// Contact sheets: see contact_sheet.h. Scaling, text and JPEG through OpenImageIO (the module
+// of core/oiio_module.h); PNG and EXR through the project's own writers (preview.h, exr.h).
 #include "renderer/output/contact_sheet.h"
-
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
@@ -14,6 +10,7 @@
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/oiio_module.h"
 #include "renderer/output/exr.h"
 #include "renderer/output/image.h"
 #include "renderer/output/preview.h"
@@ -35,12 +32,7 @@ std::string lowerExtension(const std::filesystem::path& path) {
 
 // Width in pixels of TEXT at SIZE in FONT (0 when it cannot be measured).
 int textWidth(const std::string& text, int size, const std::string& font) {
-    const OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, size, font);
-    if (!r.defined()) {
-        OIIO::geterror();  // clear it: the caller reports
-        return 0;
-    }
-    return r.width();
+    return oiioModule().textWidth(text, size, font);
 }
 
 // TEXT cut (at a UTF-8 character boundary) and ended with "..." until it fits WIDTH.
@@ -116,10 +108,7 @@ ContactSheet::ContactSheet(SheetLayout layout) : layout_(std::move(layout)) {
     const auto h = static_cast<size_t>(layout_.height());
     rgb_.assign(w * h * 3, kBackground);
     if (layout_.labels.empty()) return;
-    OIIO::ImageBuf buf(
-        OIIO::ImageSpec(static_cast<int>(layout_.width()), static_cast<int>(layout_.height()), 3,
-                        OIIO::TypeDesc::FLOAT),
-        rgb_.data());
+    OiioModule& oiio = oiioModule();
     const float colour[3] = {kTextColour, kTextColour, kTextColour};
     for (int i = 0; i < layout_.count && i < static_cast<int>(layout_.labels.size()); ++i) {
         const std::string& text = layout_.labels[static_cast<size_t>(i)];
@@ -130,11 +119,11 @@ ContactSheet::ContactSheet(SheetLayout layout) : layout_(std::move(layout)) {
         const int y = layout_.gap +
                       row * (layout_.tile_height + layout_.label_height + layout_.gap) +
                       layout_.tile_height + layout_.label_height / 2;
-        if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, layout_.font_size, layout_.font,
-                                             colour, OIIO::ImageBufAlgo::TextAlignX::Center,
-                                             OIIO::ImageBufAlgo::TextAlignY::Center))
-            throw RuntimeError("cannot draw the label '" + quoteText(text) +
-                               "': " + buf.geterror());
+        std::string why;
+        if (!oiio.drawText(rgb_.data(), static_cast<int>(layout_.width()),
+                           static_cast<int>(layout_.height()), x, y, text, layout_.font_size,
+                           layout_.font, colour, why))
+            throw RuntimeError("cannot draw the label '" + quoteText(text) + "': " + why);
     }
 }
 
@@ -150,22 +139,22 @@ void ContactSheet::place(int index, const DisplayImage& image) {
         std::clamp(static_cast<int>(std::lround(image.width * scale)), 1, layout_.tile_width);
     const int fh =
         std::clamp(static_cast<int>(std::lround(image.height * scale)), 1, layout_.tile_height);
-    const OIIO::ImageBuf src(OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT),
-                             const_cast<float*>(image.rgb.data()));
-    OIIO::ImageBuf fitted(OIIO::ImageSpec(fw, fh, 3, OIIO::TypeDesc::FLOAT));
+    std::vector<float> px;
     if (fw == image.width && fh == image.height) {
-        fitted.copy_pixels(src);
-    } else if (!OIIO::ImageBufAlgo::resize(fitted, src)) {
-        throw RuntimeError("contact sheet: cannot scale cell " + std::to_string(index + 1) + ": " +
-                           fitted.geterror());
+        px = image.rgb;
+    } else {
+        px.resize(static_cast<size_t>(fw) * static_cast<size_t>(fh) * 3);
+        std::string why;
+        if (!oiioModule().resize(image.rgb.data(), image.width, image.height, px.data(), fw, fh,
+                                 why))
+            throw RuntimeError("contact sheet: cannot scale cell " + std::to_string(index + 1) +
+                               ": " + why);
     }
     const int col = index % layout_.columns, row = index / layout_.columns;
     const int x0 =
         layout_.gap + col * (layout_.tile_width + layout_.gap) + (layout_.tile_width - fw) / 2;
     const int y0 = layout_.gap + row * (layout_.tile_height + layout_.label_height + layout_.gap) +
                    (layout_.tile_height - fh) / 2;
-    std::vector<float> px(static_cast<size_t>(fw) * static_cast<size_t>(fh) * 3);
-    fitted.get_pixels(OIIO::ROI(0, fw, 0, fh, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, px.data());
     const auto sheet_w = static_cast<size_t>(layout_.width());
     const auto row_floats = static_cast<size_t>(fw) * 3;
     for (int y = 0; y < fh; ++y) {
@@ -203,14 +192,11 @@ void ContactSheet::write(const std::filesystem::path& path) const {
     if (ext == ".png") return writePngRgb8(path, w, h, rgb8);
     if (ext != ".jpg" && ext != ".jpeg")
         throw RuntimeError(path.string() + ": a contact sheet is .png, .exr, .jpg or .jpeg");
+    OiioModule& oiio = oiioModule();  // loaded before the temporary file is made
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        auto out = OIIO::ImageOutput::create("jpeg");
-        if (!out) throw std::runtime_error("no JPEG writer: " + OIIO::geterror());
-        OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("Compression", "jpeg:92");
-        if (!out->open(tmp.string(), spec) ||
-            !out->write_image(OIIO::TypeDesc::UINT8, rgb8.data()) || !out->close())
-            throw std::runtime_error(out->geterror());
+        std::string why;
+        if (!oiio.writeJpeg(tmp.string(), w, h, rgb8.data(), 92, why))
+            throw std::runtime_error(why);
     });
 }
 

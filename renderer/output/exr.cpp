@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <set>
+#include <utility>
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
@@ -64,9 +65,38 @@ Imath::M44f toM44f(const std::array<float, 16>& m) {
     return r;
 }
 
-void writeExrFile(const std::filesystem::path& file, const Image& image) {
+Imf::Compression imfCompression(ExrCompression::Method method) {
+    switch (method) {
+        case ExrCompression::Method::None:
+            return Imf::NO_COMPRESSION;
+        case ExrCompression::Method::Rle:
+            return Imf::RLE_COMPRESSION;
+        case ExrCompression::Method::Zips:
+            return Imf::ZIPS_COMPRESSION;
+        case ExrCompression::Method::Zip:
+            return Imf::ZIP_COMPRESSION;
+        case ExrCompression::Method::Piz:
+            return Imf::PIZ_COMPRESSION;
+    }
+    return Imf::ZIP_COMPRESSION;
+}
+
+constexpr std::pair<std::string_view, ExrCompression::Method> kMethods[] = {
+    {"none", ExrCompression::Method::None},
+    {"rle", ExrCompression::Method::Rle},
+    {"zips", ExrCompression::Method::Zips},
+    {"zip", ExrCompression::Method::Zip},
+    {"piz", ExrCompression::Method::Piz}};
+
+bool takesLevel(ExrCompression::Method m) {
+    return m == ExrCompression::Method::Zip || m == ExrCompression::Method::Zips;
+}
+
+void writeExrFile(const std::filesystem::path& file, const Image& image,
+                  const ExrCompression& compression) {
     Imf::Header header(image.width, image.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = imfCompression(compression.method);
+    header.zipCompressionLevel() = compression.level;
     header.lineOrder() = Imf::INCREASING_Y;  // row 0 (top) first
     for (const auto& [name, value] : image.attributes)
         header.insert(name, Imf::StringAttribute(value));
@@ -101,10 +131,36 @@ void writeExrFile(const std::filesystem::path& file, const Image& image) {
 
 }  // namespace
 
-void writeExr(const std::filesystem::path& path, const Image& image) {
+std::optional<ExrCompression> parseExrCompression(std::string_view text) {
+    const size_t colon = text.find(':');
+    const std::string_view name = text.substr(0, colon);
+    for (const auto& [known, method] : kMethods) {
+        if (name != known) continue;
+        ExrCompression c{method};
+        if (colon == std::string_view::npos) return c;
+        const std::string_view level = text.substr(colon + 1);
+        if (!takesLevel(method) || level.size() != 1 || level[0] < '1' || level[0] > '9')
+            return std::nullopt;
+        c.level = level[0] - '0';
+        return c;
+    }
+    return std::nullopt;
+}
+
+std::string exrCompressionName(const ExrCompression& compression) {
+    std::string text = "zip";
+    for (const auto& [name, method] : kMethods)
+        if (method == compression.method) text = name;
+    if (takesLevel(compression.method)) text += ':' + std::to_string(compression.level);
+    return text;
+}
+
+void writeExr(const std::filesystem::path& path, const Image& image,
+              const ExrCompression& compression) {
     checkImage(path, image);
     useExrWorkerThreads();
-    writeAtomically(path, [&](const std::filesystem::path& tmp) { writeExrFile(tmp, image); });
+    writeAtomically(
+        path, [&](const std::filesystem::path& tmp) { writeExrFile(tmp, image, compression); });
 }
 
 }  // namespace penumbra::output

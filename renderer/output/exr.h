@@ -3,8 +3,10 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "renderer/output/image.h"
 
@@ -16,12 +18,32 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Writes IMAGE to PATH atomically (core/atomic_file.h; ZIP compression, increasing Y, each
+// How an EXR is compressed: OpenEXR's lossless methods only (the pixels read back are the ones
+// written, whichever is used). LEVEL is zlib's (1 fastest to 9 smallest) for zip and zips. The
+// default, zips (a zlib block per row), costs a sequence about a third less wall time per frame
+// than zip (16 rows a block) with the writer overlapping the passes, for files 10% larger
+// (scripts/bench frames, README).
+struct ExrCompression {
+    enum class Method { None, Rle, Zips, Zip, Piz };
+    Method method = Method::Zips;
+    int level = 4;  // OpenEXR 3.1's default
+    bool operator==(const ExrCompression&) const = default;
+};
+
+// "zip", "zip:1" ... "zip:9", "zips[:LEVEL]", "rle", "none", "piz"; nullopt for anything else.
+std::optional<ExrCompression> parseExrCompression(std::string_view text);
+// The text parseExrCompression reads back ("zip:4").
+std::string exrCompressionName(const ExrCompression& compression);
+inline constexpr const char* kExrCompressionChoices =
+    "zip, zips, rle, none or piz; zip and zips take a zlib level, zip:1 to zip:9";
+
+// Writes IMAGE to PATH atomically (core/atomic_file.h; COMPRESSION, increasing Y, each
 // channel as its `type`, attributes as string, int, float and M44f attributes). Creates missing
 // parent folders. Throws RuntimeError naming PATH on failure (also for an empty image, a channel of
 // the wrong size, duplicate channel or attribute names, or an attribute named like a standard one
 // such as "compression"); nothing is left under PATH then.
-void writeExr(const std::filesystem::path& path, const Image& image);
+void writeExr(const std::filesystem::path& path, const Image& image,
+              const ExrCompression& compression = {});
 
 // Reads every channel (as float; `type` says how it was stored) and the string, int, float
 // and M44f attributes but those every EXR header holds (other types are skipped too).

@@ -1,4 +1,4 @@
-// Image files read with OpenImageIO: see image_file.h.
+// Image files read with OpenImageIO (the module of core/oiio_module.h): see image_file.h.
 #include "renderer/scene/image_file.h"
 
 #include <algorithm>
@@ -11,13 +11,11 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "renderer/core/error.h"
 #include "renderer/core/exr_header.h"
 #include "renderer/core/json_bounds.h"
 #include "renderer/core/memory_limit.h"
+#include "renderer/core/oiio_module.h"
 #include "renderer/core/regular_file.h"
 
 namespace penumbra::scene {
@@ -31,10 +29,9 @@ std::string oneLine(std::string why) {
 }
 
 // Decodes INPUT's first subimage strip by strip into a buffer that grows with what decoded.
-FloatImage readOpened(OIIO::ImageInput& input, const std::string& label, int max_size,
-                      int channels) {
-    const OIIO::ImageSpec& spec = input.spec();
-    if (spec.width < 1 || spec.height < 1 || spec.depth != 1 || spec.nchannels < 1)
+FloatImage readOpened(ImageDecoder& input, const std::string& label, int max_size, int channels) {
+    const DecoderSpec& spec = input.spec();
+    if (spec.width < 1 || spec.height < 1 || spec.depth != 1 || spec.channels < 1)
         throw InputError(label + ": not a 2D image");
     if (spec.width > max_size || spec.height > max_size)
         throw InputError(label + ": image too large (" + std::to_string(spec.width) + "x" +
@@ -42,7 +39,7 @@ FloatImage readOpened(OIIO::ImageInput& input, const std::string& label, int max
     FloatImage image;
     image.width = spec.width;
     image.height = spec.height;
-    image.channels = std::min(channels, spec.nchannels);
+    image.channels = std::min(channels, spec.channels);
     const auto row =
         static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(image.channels);
     requireMemory(saturatingProduct({row, static_cast<std::uint64_t>(spec.height), 4}), label,
@@ -57,13 +54,8 @@ FloatImage readOpened(OIIO::ImageInput& input, const std::string& label, int max
         const int y1 = std::min(spec.height, y0 + step);
         image.pixels.resize(row * static_cast<std::size_t>(y1));
         float* out = image.pixels.data() + row * static_cast<std::size_t>(y0);
-        const bool ok = spec.tile_width > 0
-                            ? input.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y0,
-                                               spec.y + y1, spec.z, spec.z + 1, 0, image.channels,
-                                               OIIO::TypeDesc::FLOAT, out)
-                            : input.read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0,
-                                                   image.channels, OIIO::TypeDesc::FLOAT, out);
-        if (!ok) throw InputError(label + ": cannot read pixels" + oneLine(input.geterror()));
+        if (!input.readRows(y0, y1, image.channels, out))
+            throw InputError(label + ": cannot read pixels" + oneLine(input.error()));
     }
     input.close();
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
@@ -122,9 +114,11 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
             throw InputError(label + ": cannot read image: " + why);
     }
 
+    OiioModule& oiio = oiioModule();
     const QuietStderr quiet;
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input) throw InputError(label + ": cannot read image" + oneLine(OIIO::geterror()));
+    std::string why;
+    auto input = oiio.open(path.string(), why);
+    if (!input) throw InputError(label + ": cannot read image" + oneLine(why));
     return readOpened(*input, label, max_size, channels);
 }
 
@@ -134,10 +128,11 @@ FloatImage readFloatImageFromMemory(const unsigned char* bytes, std::size_t size
     if (extension == ".exr")
         if (const std::string why = exrHeaderProblem(bytes, size); !why.empty())
             throw InputError(label + ": cannot read image: " + why);
-    OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes), size);
+    OiioModule& oiio = oiioModule();
     const QuietStderr quiet;
-    auto input = OIIO::ImageInput::open("memory" + std::string(extension), nullptr, &proxy);
-    if (!input) throw InputError(label + ": cannot read image" + oneLine(OIIO::geterror()));
+    std::string why;
+    auto input = oiio.openMemory(bytes, size, std::string(extension), why);
+    if (!input) throw InputError(label + ": cannot read image" + oneLine(why));
     return readOpened(*input, label, max_size, channels);
 }
 

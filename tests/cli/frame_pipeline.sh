@@ -2,7 +2,8 @@
 # render are the bytes the serial path writes (PENUMBRA_SERIAL_WRITES=1); a sequence stopped by
 # SIGINT or SIGTERM mid-write leaves no temporary and no partial file, one killed by SIGKILL no
 # partial file (its temporaries go with the next run); the program binary cache is hit by a
-# second process, and a corrupt cache file is ignored with the same output.
+# second process, and a corrupt cache file is ignored with the same output; every
+# --exr-compression gives the same pixels.
 source "$(dirname "$0")/lib.sh"
 cd "$WORK"
 scene="$DATA/anim6.json"
@@ -17,6 +18,26 @@ for f in 1 2 3 4 5 6; do
         cmp "pipe/$name" "serial/$name" || fail "$name differs between pipelined and serial writes"
     done
     [ -s "pipe/$(printf 'f.%04d.json' "$f")" ] || fail "frame $f has no timing JSON"
+done
+
+# 1b. --exr-compression: every method is lossless (the default's pixels, to the bit, pipelined
+# and serial alike), named in the header (the default: zips); an unknown or lossy one is
+# refused before rendering.
+oiiotool --info -v pipe/f.0002.exr | grep -q 'compression: "zips"' || fail "the default is not zips"
+for c in zip zip:1 zip:9 zips:1 rle none piz; do
+    "$PENUMBRA" render "$scene" -f 2 -o "comp/$c.exr" --exr-compression "$c" --quiet
+    "$PENUMBRA" compare pipe/f.0002.exr "comp/$c.exr" --fail 0 --warn 0 >/dev/null ||
+        fail "--exr-compression $c changed the pixels"
+    oiiotool --info -v "comp/$c.exr" | grep -q "compression: \"${c%%:*}\"" ||
+        fail "--exr-compression $c: the header says $(oiiotool --info -v "comp/$c.exr" | grep compression)"
+done
+PENUMBRA_SERIAL_WRITES=1 "$PENUMBRA" render "$scene" -f 2 -o comp/serial.exr \
+    --exr-compression zip:1 --quiet
+cmp comp/zip:1.exr comp/serial.exr || fail "zip:1 differs between pipelined and serial writes"
+for bad in dwaa zip:0 rle:2 ''; do
+    expect_exit 2 "^penumbra: render: --exr-compression: '$bad' is not zip, zips, rle, none or piz" -- \
+        "$PENUMBRA" render "$scene" -f 2 -o "bad/f.exr" --exr-compression "$bad"
+    [ ! -e bad ] || fail "--exr-compression $bad wrote something"
 done
 
 # 2. Interrupted while a temporary exists: SIGINT and SIGTERM remove it; SIGKILL cannot, but

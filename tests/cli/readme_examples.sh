@@ -45,6 +45,10 @@ done
 completion="$WORK/home/.local/share/bash-completion/completions/penumbra"
 bash -n "$completion" || fail "the installed completion is not valid bash"
 grep -q -- "--skip-existing" "$completion" || fail "the completion lacks render's flags"
+# The installed binary finds its OpenImageIO module in <prefix>/lib/penumbra/.
+[ -f "$WORK/home/.local/lib/penumbra/libpenumbra_oiio.so" ] || fail "no lib/penumbra module installed"
+"$WORK/home/.local/bin/penumbra" contact-sheet "$PENUMBRA_SOURCE_DIR/tests/data/gl/budget_halves.png" \
+    -o "$WORK/installed_sheet.png" --quiet || fail "the installed binary cannot draw a contact sheet"
 [ -f out/walk/walk.0024.exr ] && [ -f out/walk/walk.0024.png ] || fail "no walk sequence in out/walk"
 [ -f out/ref.exr ] && [ -f out/hard.exr ] || fail "no out/ref.exr, out/hard.exr"
 stray=$(git -C "$PENUMBRA_SOURCE_DIR" ls-files -co --exclude-standard -z | tr '\0' '\n' |
