@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/passes/gbuffer.h"
@@ -12,6 +13,7 @@
 #include "renderer/techniques/adaptive/error_budget.h"
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/adaptive/pixel_error_budget.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -52,10 +54,11 @@ inline constexpr std::array kAdaptiveParams = {
               "image size); global: eq. 4 with epsilon over the whole frame (paper); tile: "
               "refine when any screen tile's disagreeing share reaches tile_epsilon (the local "
               "metric 5.1 asks for)"),
-    floatParam(kTargetError, 0.02, 0.0, 1.0,
+    floatParam(kTargetError, 0.014, 0.0, 1.0,
                "metric \"error\": the shadow-region error of visibility (mean |V - V_true| over "
-               "shadowed pixels) that the light's subdivision may leave; a cell's estimate is "
-               "1/4 x its share of the light x its disagreeing over the shadowed pixels"),
+               "shadowed pixels) that the light's subdivision may leave: a cell whose corners "
+               "disagree at a pixel leaves 1/4 x its share of the light there, cells at one "
+               "pixel add as a root sum of squares, calibrated on the conformance corpus"),
     floatParam(kEpsilon, 0.003, 0.0, 1.0,
                "metric \"global\": refine when disagreeing pixels / metric area >= epsilon "
                "(eq. 4)"),
@@ -78,8 +81,9 @@ inline constexpr std::array kAdaptiveParams = {
     intParam(kCompareStride, 2, 1, 8,
              "compare at every k-th pixel along x and y of the comparison view, counting each "
              "disagreement as k^2 pixels (1: every pixel, as the paper)"),
-    intParam(kMaxDepth, 3, 0, 8, "deepest quadtree level"),
-    intParam(kMaxMaps, 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
+    intParam(kMaxDepth, 4, 0, 8, "deepest quadtree level"),
+    intParam(kMaxMaps, 289, 4, 1024,
+             "most shadow maps per light (refinement stops there; 289: the full depth-4 grid)"),
     enumParam(kSubdivision, Subdivision::Auto,
               "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
               "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
@@ -99,12 +103,13 @@ inline constexpr std::array kAdaptiveParams = {
     kDepthBiasParam,
 };
 
-// Maps rendered per draw into the scratch array before they are copied to their layers.
+// Maps rendered per layered draw.
 inline constexpr int kScratchLayers = 16;
 
 // What refining a light's quadtree found, for the statistics.
 struct Refinement {
     int comparisons = 0;
+    int queries = 0;  // occlusion queries (the bits path compares on the CPU)
     bool budget_hit = false;
     double estimated_error = 0.0;  // metric "error"
 };
@@ -126,6 +131,24 @@ private:
     // disagree (RECEIVERS: the pixels compared; AREA: the metric's pixel count).
     Refinement refine(frame::FrameContext& ctx, LightQuadtree& tree,
                       const passes::GBuffer& receivers, double area);
+
+    // The comparison counts of CELLS' diagonals (tree.comparisons() order), one occlusion query
+    // per pair, with COUNT_SHADOWED the pixels any root corner shadows last.
+    std::vector<CompareResult> compareByQueries(const LightQuadtree& tree,
+                                                const std::vector<QuadtreeCell>& cells,
+                                                const passes::GBuffer& receivers,
+                                                const scene::RectLight& light, int level,
+                                                bool count_shadowed);
+    // Metric "error" on shadow bits: compares CELLS from one pass over the level's corner
+    // maps (each read once, however many cells share it) and splits those BUDGET chooses (made
+    // at level 0, from the pixels the root corners shadow) within the map budget; returns the
+    // children.
+    std::vector<QuadtreeCell> refineByBits(frame::FrameContext& ctx, LightQuadtree& tree,
+                                           const std::vector<QuadtreeCell>& cells,
+                                           const passes::GBuffer& receivers, int level,
+                                           std::optional<PixelErrorBudget>& budget, Refinement& r);
+    // Metric "error" on hard-test comparisons: the counts come from shadow bits.
+    bool bitsPath() const { return error_metric_ && compare_.tests && compare_.tile_size == 0; }
 
     // Adds the light's maps, weighted, into its visibility.
     void evaluate(frame::FrameContext& ctx, const LightQuadtree& tree);
@@ -159,6 +182,9 @@ private:
     // Renders the samples without a map yet into their layers of maps_ (one pass per level).
     void renderNewMaps(frame::FrameContext& ctx, const LightQuadtree& tree, int level);
 
+    // Grows maps_ to at least N layers, keeping its first FILLED maps.
+    void reserveMaps(int filled, int n);
+
     // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).
     void copyToMaps(int base, int count);
 
@@ -179,6 +205,7 @@ private:
     int max_maps_;
     LightQuadtree::Weighting weighting_;
     bool accumulate_path_;
+    bool vertex_layer_ = false;
     Subdivision subdivision_;
     bool jitter_;
     unsigned seed_;
