@@ -46,7 +46,8 @@ Adaptive::Adaptive(const Params& p)
 }
 
 void Adaptive::prepare(const gl::ContextInfo& gl, const passes::GpuScene&) {
-    max_maps_ = std::min({max_maps_, std::max(gl.max_array_layers, 2), passes::kMaxSampleLookups});
+    max_maps_ = std::min({mapLayers(max_maps_, settings_.map_size),
+                          std::max(gl.max_array_layers, 2), passes::kMaxSampleLookups});
     vertex_layer_ = gl.has_vertex_layer;
     maps_.reset();         // reserveMaps() sizes it by what refinement reaches
     if (accumulate_path_)  // one map at a time, accumulated from layer 0
@@ -226,7 +227,7 @@ const TechniqueInfo kAdaptiveTechnique = {
     // The maps, the accumulation path's scratch map and the light-view G-buffer (48 bytes a
     // texel).
     [](const Params& p, std::uint64_t) {
-        const int maps = p.get(adaptive::kMaxMaps);
+        const int maps = adaptive::mapLayers(p.get(adaptive::kMaxMaps), p.get(kMapSize));
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         MemoryTerms out = {shadowMapArrayTerm(p, maps)};
         if (p.getEnum(adaptive::kEvaluation) == adaptive::Evaluation::Accumulate) {

@@ -3,7 +3,9 @@
 // light-sample maps and choosing the quadtree cells to split).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -83,7 +85,8 @@ inline constexpr std::array kAdaptiveParams = {
              "disagreement as k^2 pixels (1: every pixel, as the paper)"),
     intParam(kMaxDepth, 4, 0, 8, "deepest quadtree level"),
     intParam(kMaxMaps, 289, 4, 1024,
-             "most shadow maps per light (refinement stops there; 289: the full depth-4 grid)"),
+             "most shadow maps per light (refinement stops there; 289: the full depth-4 grid); "
+             "lowered to the maps that fit 2 GiB (128 of 2048^2)"),
     enumParam(kSubdivision, Subdivision::Auto,
               "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
               "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
@@ -105,6 +108,15 @@ inline constexpr std::array kAdaptiveParams = {
 
 // Maps rendered per layered draw.
 inline constexpr int kScratchLayers = 16;
+
+// The most bytes of the array of maps (it grows to max_maps): at larger map sizes max_maps is
+// lowered to what fits (128 maps of 2048^2), never below the 4 corners.
+inline constexpr std::uint64_t kMaxArrayBytes = std::uint64_t{2} << 30;
+inline int mapLayers(int max_maps, int map_size) {
+    const auto per_map = std::uint64_t(map_size) * std::uint64_t(map_size) * 4;
+    return std::max(
+        4, int(std::min<std::uint64_t>(std::uint64_t(max_maps), kMaxArrayBytes / per_map)));
+}
 
 // What refining a light's quadtree found, for the statistics.
 struct Refinement {
