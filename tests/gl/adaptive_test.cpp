@@ -46,10 +46,7 @@ std::string reference(int n) {
 
 // The bar on SCENE: adaptive at most as far from exact N = 32 as reference N = 8 is,
 // with at most a third of the 256 maps reference N = 16 renders, within the 9 x 9 grid of depth
-// 3. (The defaults, depth 4 and target_error 0.014, stop at 59-66 maps with 0.014 and 0.021
-// here; at target 0.007 they refine these scenes to 136-155 maps, 0.009 and 0.011: the closed
-// form's edges, parallel to the light's, make the cells' errors add, more than the estimate's
-// root sum of squares assumes.)
+// 3. (At its defaults, depth 4, the summed estimate refines these scenes past 85 maps.)
 void checkAgainstReference(const std::string& scene) {
     const auto truth = render(scene, penumbra::testing::kGroundTruth).visibility;
     const double ref8 = shadowRegionMae(render(scene, reference(8)).visibility, truth);

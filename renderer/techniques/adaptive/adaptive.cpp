@@ -26,6 +26,7 @@ Adaptive::Adaptive(const Params& p)
       max_maps_(p.get(kMaxMaps)),
       weighting_(p.getEnum(kWeights)),
       accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
+      rss_estimate_(p.getEnum(kEstimate) == Estimate::Rss),
       subdivision_(p.getEnum(kSubdivision)),
       jitter_(p.get(kJitter)),
       seed_(static_cast<unsigned>(p.get(kSeed))),
@@ -101,7 +102,7 @@ Refinement Adaptive::refine(frame::FrameContext& ctx, adaptive::LightQuadtree& t
         renderNewMaps(ctx, tree, level);
         if (level >= max_depth_ || cells.empty()) break;
         if (bitsPath()) {
-            cells = refineByBits(ctx, tree, cells, receivers, level, pixel_budget, r);
+            cells = refineByBits(ctx, tree, cells, receivers, level, budget, pixel_budget, r);
             continue;
         }
         std::vector<adaptive::CompareResult> counts;

@@ -11,6 +11,7 @@ namespace penumbra::techniques::adaptive {
 std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, LightQuadtree& tree,
                                                  const std::vector<QuadtreeCell>& cells,
                                                  const passes::GBuffer& receivers, int level,
+                                                 ErrorBudget& sum_budget,
                                                  std::optional<PixelErrorBudget>& budget,
                                                  Refinement& r) {
     // Each corner map of the level gets one slot, shared by every cell it is a corner of.
@@ -34,9 +35,9 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
     });
     if (level == 0) {
-        const double shadowed = bits.anyShadowed(corners);
-        const double per_pixel = shadowed > 0 ? kErrorCalibration * bits.scale / shadowed : 0.0;
-        budget.emplace(target_error_, bits.pixels, per_pixel);
+        shadowed_ = bits.anyShadowed(corners);
+        const double per_pixel = shadowed_ > 0 ? kErrorCalibration * bits.scale / shadowed_ : 0.0;
+        if (rss_estimate_) budget.emplace(target_error_, bits.pixels, per_pixel);
     }
     std::vector<double> errors;
     std::vector<std::vector<std::uint32_t>> where;
@@ -49,6 +50,14 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         any.insert(any.end(), where.back().begin(), where.back().end());
     }
     if (!light_centre_) map_compare_->raiseLevels(any, level);
+    if (!rss_estimate_) {  // the sum: each cell's worse diagonal, as the queries count it
+        std::vector<CompareResult> counts;
+        for (size_t i = 0; i < cells.size(); ++i)
+            for (const auto& pair : pairs[i])
+                counts.push_back(
+                    {double(bits.disagreeing(std::span(&pair, 1)).size()) * bits.scale, 0.0});
+        return splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
+    }
     std::vector<QuadtreeCell> next;
     for (size_t i : budget->choose(errors, where)) {
         if (!fitsMapBudget(tree, cells[i])) {
