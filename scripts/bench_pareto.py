@@ -36,8 +36,10 @@ SCENES = ["light_size_0.25", "light_size_2", "spheres_three_sizes", "bar_grid", 
 # (sweep label, technique, fixed overrides, --vary specs); reference's --vary comes from
 # --pareto-samples.
 SWEEPS = [
-    ("adaptive", "adaptive", {}, ["technique.target_error=0.007,0.014,0.028",
+    ("adaptive", "adaptive", {}, ["technique.target_error=0.01,0.02,0.04",
                                   "technique.max_maps=81,289"]),
+    ("adaptive_rss", "adaptive", {"technique.estimate": "rss"},
+     ["technique.target_error=0.007,0.014,0.028"]),
     ("adaptive_global", "adaptive", {"technique.metric": "global"},
      ["technique.epsilon=0.001,0.003,0.01"]),
     ("bitmask", "bitmask", {}, ["technique.budget=5,8,12,0",
