@@ -36,8 +36,10 @@ SCENES = ["light_size_0.25", "light_size_2", "spheres_three_sizes", "bar_grid", 
 # (sweep label, technique, fixed overrides, --vary specs); reference's --vary comes from
 # --pareto-samples.
 SWEEPS = [
-    ("adaptive", "adaptive", {}, ["technique.target_error=0.005,0.01,0.02,0.04",
-                                  "technique.max_maps=25,81"]),
+    ("adaptive", "adaptive", {}, ["technique.target_error=0.01,0.02,0.04",
+                                  "technique.max_maps=81,289"]),
+    ("adaptive_rss", "adaptive", {"technique.estimate": "rss"},
+     ["technique.target_error=0.007,0.014,0.028"]),
     ("adaptive_global", "adaptive", {"technique.metric": "global"},
      ["technique.epsilon=0.001,0.003,0.01"]),
     ("bitmask", "bitmask", {}, ["technique.budget=5,8,12,0",
@@ -48,6 +50,7 @@ SWEEPS = [
     # llvmpipe under load) and its error was no lower (light_size_0.25: 0.027 against 0.024).
     ("ssm", "ssm", {}, ["technique.map_size=128,256", "technique.layers=1,2,4"]),
 ]
+TECHNIQUES = list(dict.fromkeys(t for _, t, _, _ in SWEEPS))
 PENUMBRA_QUARTER = 0.25  # adaptive's goal: <= 0.5 where at most this share is in penumbra
 
 
@@ -57,6 +60,9 @@ def add_arguments(p):
                    f"{','.join(SCENES)})")
     p.add_argument("--pareto-samples", type=parse_samples, default=list(range(1, 17)),
                    help="pareto: reference's N, A:B or a list (default 1:16, every N)")
+    p.add_argument("--pareto-techniques", type=parse_techniques, default=TECHNIQUES,
+                   help="pareto: the techniques swept besides reference, comma-separated "
+                   f"(default: {','.join(TECHNIQUES)})")
 
 
 def parse_scenes(text):
@@ -68,6 +74,17 @@ def parse_scenes(text):
     if not scenes:
         raise argparse.ArgumentTypeError("no scene")
     return scenes
+
+
+def parse_techniques(text):
+    """'adaptive,css' -> ['adaptive', 'css'], each swept here; argparse's error otherwise."""
+    techniques = [t for t in text.split(",") if t]
+    for t in techniques:
+        if t not in TECHNIQUES:
+            raise argparse.ArgumentTypeError(f"no pareto sweep of '{t}' ({','.join(TECHNIQUES)})")
+    if not techniques:
+        raise argparse.ArgumentTypeError("no technique")
+    return techniques
 
 
 def parse_samples(text):
@@ -144,7 +161,7 @@ def params_text(values):
     return " ".join(f"{k.split('.', 1)[1]}={v}" for k, v in values.items())
 
 
-def scene_rows(b, scene, root, samples, defaults):
+def scene_rows(b, scene, root, samples, defaults, techniques):
     """Every sweep of SCENE: (rows, folders, reference front, penumbra share)."""
     folder, ref = sweep(b, scene, "reference", "reference", {},
                         ["technique.samples=" + ",".join(str(n) for n in samples)], root)
@@ -158,6 +175,8 @@ def scene_rows(b, scene, root, samples, defaults):
              "kind": "front" if (n, e, t) in front else "", "defaults": n == 16}
             for n, e, t in refs]
     for label, technique, fixed, varied in SWEEPS:
+        if technique not in techniques:
+            continue
         folder, doc = sweep(b, scene, label, technique, fixed, varied, root)
         folders.append(folder)
         for r in doc["runs"]:
@@ -271,7 +290,8 @@ def pareto(b):
     os.makedirs(root, exist_ok=True)
     defaults, rows, folders, shares, fronts = Defaults(b.binary), [], [], {}, {}
     for scene in scenes:
-        r, f, fronts[scene], shares[scene] = scene_rows(b, scene, root, samples, defaults)
+        r, f, fronts[scene], shares[scene] = scene_rows(b, scene, root, samples, defaults,
+                                                                b.args.pareto_techniques)
         rows += r
         folders += f
     print_rows(rows)

@@ -124,6 +124,36 @@ void ShadowMapBatch::render(const GpuScene& scene, int view_base, int count) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void ShadowMapBatch::render(const GpuScene& scene, int view_base, int count, int first_layer) {
+    count = std::min(count, layers_ - first_layer);
+    if (count <= 0) return;
+    if (!vertex_layer_) {
+        beginDepthMapDraw(fbo_.id(), map_size_);
+        glUseProgram(program_.id());
+        const float one = 1.0f;
+        for (int i = 0; i < count; ++i) {
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0,
+                                           first_layer + i);
+            glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+            gl::setUniform(program_, "u_view_base", view_base + i);
+            scene.draw(program_, GpuScene::Filter::Casters, 1);
+        }
+        glUseProgram(0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return;
+    }
+    // A view of the layers, attached layered: gl_Layer 0.. lands on FIRST_LAYER.., and the
+    // clear touches only them.
+    GLuint view = 0;
+    glGenTextures(1, &view);
+    glTextureView(view, GL_TEXTURE_2D_ARRAY, depth_.id(), GL_DEPTH_COMPONENT32F, 0, 1,
+                  GLuint(first_layer), GLuint(count));
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, view, 0);
+    render(scene, view_base, count);
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    glDeleteTextures(1, &view);
+}
+
 ShadowAccumulate::ShadowAccumulate()
     : program_(gl::buildProgram("shadow accumulate",
                                 {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"})) {}

@@ -43,6 +43,9 @@ public:
     // Renders VIEWS (at most layers()) into layers 0..n-1. VIEWS_BUFFER must hold them from
     // index VIEW_BASE on (bound to kBindingSampleViews by the caller).
     void render(const GpuScene& scene, int view_base, int count);
+    // The same into layers FIRST_LAYER..FIRST_LAYER+COUNT-1, clearing only those (the others
+    // keep their maps).
+    void render(const GpuScene& scene, int view_base, int count, int first_layer);
 
     int layers() const { return layers_; }
     int mapSize() const { return map_size_; }

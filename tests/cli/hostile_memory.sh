@@ -19,7 +19,7 @@ expect_exit 2 "small.json: image.width: the render needs about .* more than the 
 # map_size_16384 for reference and adaptive, css order 16 at 4096: were exit 1.
 expect_exit 2 "small.json: technique.map_size: the shadow map array \(16384\^2 x 32\)" -- \
     render -t reference -D technique.map_size=16384
-expect_exit 2 "small.json: technique.map_size: the shadow map array \(16384\^2 x 81\)" -- \
+expect_exit 2 "small.json: technique.map_size: the shadow map array \(16384\^2 x 4\)" -- \
     render -t adaptive -D technique.map_size=16384
 expect_exit 2 "small.json: technique.order: the basis images \(4096\^2 x 17 RGBA32F\)" -- \
     render -t css -D technique.order=16 -D technique.map_size=4096

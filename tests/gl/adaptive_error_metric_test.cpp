@@ -1,6 +1,7 @@
 // `adaptive`'s default refinement rule, metric "error": the maps it renders fall with the light's
-// size, the same scene refines to the same tree at any image size, and stopping at target_error
-// adds at most that much shadow-region error to the full refinement's.
+// size, the same scene refines to the same tree at any image size, stopping at target_error
+// adds at most that much shadow-region error to the full refinement's, the estimate is the error
+// within a factor, and thin casters refine deeper only where they need it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,13 +90,15 @@ TEST(AdaptiveErrorMetricGL, StoppingAtTheTargetAddsAtMostTheTarget) {
     // Against the closed form of a 2 m light (a wide penumbra): the full 9 x 9 refinement
     // (target 0) sets the floor of the shadow maps themselves; each target may add at most
     // itself to it, and a lower target never renders fewer maps.
+    // (max_depth 3: the 9 x 9 grid is the floor.)
     const std::vector<penumbra::scene::Override> light = {{"lights.0.size", "[2, 2]"}};
-    auto full = adaptive("closed_form.json", R"(, "target_error": 0)", light);
+    auto full = adaptive("closed_form.json", R"(, "target_error": 0, "max_depth": 3)", light);
     const double floor = penumbra::testing::closedFormShadowMae(full.image, 1.0, 500);
     EXPECT_EQ(full.maps(), 81);
     int last = 1000;
     for (const char* target : {"0.005", "0.02", "0.05", "0.1"}) {
-        auto r = adaptive("closed_form.json", std::string(R"(, "target_error": )") + target, light);
+        auto r = adaptive("closed_form.json",
+                          std::string(R"(, "max_depth": 3, "target_error": )") + target, light);
         const double mae = penumbra::testing::closedFormShadowMae(r.image, 1.0, 500);
         std::printf("target %s: %d maps, estimate %.4f, MAE %.4f (full refinement %.4f)\n", target,
                     r.maps(), r.stats.value("estimated_error", 0.0), mae, floor);
@@ -104,4 +107,32 @@ TEST(AdaptiveErrorMetricGL, StoppingAtTheTargetAddsAtMostTheTarget) {
         last = r.maps();
     }
     EXPECT_LT(last, 81);
+}
+
+TEST(AdaptiveErrorMetricGL, ThinCastersRefineToDepthFour) {
+    // adaptive_bars.json: conformance's bar_grid (nine thin bars under a 0.8 m light, 320 x
+    // 240, map_size 1024). Their shadows need more than the 9 x 9 grid of depth 3 (0.0228 on the
+    // floor at the former defaults, over the bound of 0.02): the defaults refine to depth 4;
+    // estimate "rss" at target 0.014 only where it asks for it (fewer than the 17 x 17 grid's 289
+    // maps), and its estimate is the error within a factor of 1.5.
+    const auto truth = penumbra::testing::renderScene(
+        "adaptive_bars.json", {{"technique", penumbra::testing::kGroundTruth}});
+    for (const char* extra : {"", R"(, "estimate": "rss", "target_error": 0.014)"}) {
+        nlohmann::json stats;
+        auto r = penumbra::testing::renderScene(
+            "adaptive_bars.json",
+            {{"technique", std::string(R"({"name": "adaptive")") + extra + "}"}}, 0, &stats);
+        const double mae = penumbra::testing::floorShadowMae(truth, r, 500);
+        const int maps = stats.value("maps_rendered", 0);
+        const double estimate = stats.value("estimated_error", 0.0);
+        std::printf("bars%s: %d maps, depth %d, estimate %.4f, floor MAE %.4f against exact\n",
+                    extra, maps, stats.value("depth_reached", 0), estimate, mae);
+        EXPECT_LE(mae, 0.02);
+        EXPECT_EQ(stats.value("depth_reached", 0), 4);
+        if (*extra) {
+            EXPECT_LT(maps, 289);
+            EXPECT_GT(estimate, mae / 1.5);
+            EXPECT_LT(estimate, mae * 1.5);
+        }
+    }
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "renderer/core/error.h"
@@ -25,6 +26,7 @@ Adaptive::Adaptive(const Params& p)
       max_maps_(p.get(kMaxMaps)),
       weighting_(p.getEnum(kWeights)),
       accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
+      rss_estimate_(p.getEnum(kEstimate) == Estimate::Rss),
       subdivision_(p.getEnum(kSubdivision)),
       jitter_(p.get(kJitter)),
       seed_(static_cast<unsigned>(p.get(kSeed))),
@@ -45,11 +47,13 @@ Adaptive::Adaptive(const Params& p)
 }
 
 void Adaptive::prepare(const gl::ContextInfo& gl, const passes::GpuScene&) {
-    max_maps_ = std::min({max_maps_, std::max(gl.max_array_layers, 2), passes::kMaxSampleLookups});
-    maps_ = std::make_unique<passes::ShadowMapBatch>(settings_.map_size, max_maps_,
-                                                     gl.has_vertex_layer);
-    scratch_ = std::make_unique<passes::ShadowMapBatch>(
-        settings_.map_size, std::min(kScratchLayers, max_maps_), gl.has_vertex_layer);
+    max_maps_ = std::min({mapLayers(max_maps_, settings_.map_size),
+                          std::max(gl.max_array_layers, 2), passes::kMaxSampleLookups});
+    vertex_layer_ = gl.has_vertex_layer;
+    maps_.reset();         // reserveMaps() sizes it by what refinement reaches
+    if (accumulate_path_)  // one map at a time, accumulated from layer 0
+        scratch_ =
+            std::make_unique<passes::ShadowMapBatch>(settings_.map_size, 1, gl.has_vertex_layer);
     accumulate_ = std::make_unique<passes::ShadowAccumulate>();
     map_compare_ = std::make_unique<adaptive::MapCompare>();
     if (light_centre_)
@@ -93,33 +97,48 @@ Refinement Adaptive::refine(frame::FrameContext& ctx, adaptive::LightQuadtree& t
     int level = 0;
     adaptive::ErrorBudget budget(target_error_);
     double shadowed = 0;  // metric "error": pixels any corner map shadows
+    std::optional<adaptive::PixelErrorBudget> pixel_budget;  // the bits path's
     for (;; ++level) {
         renderNewMaps(ctx, tree, level);
         if (level >= max_depth_ || cells.empty()) break;
-        // Both diagonals (or the ends) of every cell of this level, one query each.
+        if (bitsPath()) {
+            cells = refineByBits(ctx, tree, cells, receivers, level, budget, pixel_budget, r);
+            continue;
+        }
         std::vector<adaptive::CompareResult> counts;
-        int queued = 0;
-        for (const auto& c : cells) queued += int(tree.comparisons(c).size());
         ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
             const bool count_shadowed = error_metric_ && level == 0;
-            map_compare_->begin(receivers, *maps_, light, compare_, queued + count_shadowed);
-            for (const auto& c : cells)
-                for (auto [a, b] : tree.comparisons(c)) map_compare_->compare(a, b, level);
-            if (count_shadowed)
-                map_compare_->countShadowed(tree.linear() ? std::array{0, 1, 0, 1}
-                                                          : std::array{0, 1, 2, 3});
-            counts = map_compare_->end();
+            counts = compareByQueries(tree, cells, receivers, light, level, count_shadowed);
             if (count_shadowed) {
                 shadowed = counts.back().pixels;
                 counts.pop_back();
             }
         });
         r.comparisons += static_cast<int>(counts.size());
+        r.queries += static_cast<int>(counts.size());
         cells = error_metric_ ? splitByError(tree, cells, counts, shadowed, budget, r.budget_hit)
                               : splitCells(tree, cells, counts, area, r.budget_hit);
     }
-    if (error_metric_) r.estimated_error = budget.estimate();
+    if (error_metric_)
+        r.estimated_error = pixel_budget ? pixel_budget->estimate() : budget.estimate();
     return r;
+}
+
+// Both diagonals (or the ends) of every cell of this level, one occlusion query each, and with
+// COUNT_SHADOWED the pixels any root corner shadows last.
+std::vector<adaptive::CompareResult> Adaptive::compareByQueries(
+    const adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
+    const passes::GBuffer& receivers, const scene::RectLight& light, int level,
+    bool count_shadowed) {
+    int queued = 0;
+    for (const auto& c : cells) queued += int(tree.comparisons(c).size());
+    map_compare_->begin(receivers, *maps_, light, compare_, queued + count_shadowed);
+    for (const auto& c : cells)
+        for (auto [a, b] : tree.comparisons(c)) map_compare_->compare(a, b, level);
+    if (count_shadowed)
+        map_compare_->countShadowed(tree.linear() ? std::array{0, 1, 0, 1}
+                                                  : std::array{0, 1, 2, 3});
+    return map_compare_->end();
 }
 
 // Adds the light's maps, weighted, into its visibility.
@@ -168,7 +187,7 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     auto& st = ctx.stats;
     st["maps_rendered"] = st.value("maps_rendered", 0) + n;
     st["comparisons"] = st.value("comparisons", 0) + r.comparisons;
-    st["queries"] = st.value("queries", 0) + r.comparisons;
+    st["queries"] = st.value("queries", 0) + r.queries;
     st["depth_reached"] = std::max(st.value("depth_reached", 0), depth_reached);
     st["map_budget_hit"] = st.value("map_budget_hit", false) || r.budget_hit;
     if (error_metric_)
@@ -206,13 +225,16 @@ const TechniqueInfo kAdaptiveTechnique = {
         return std::make_unique<adaptive::Adaptive>(p);
     },
     nullptr,
-    // The maps, the scratch batch and the light-view G-buffer (48 bytes a texel).
+    // The maps, the accumulation path's scratch map and the light-view G-buffer (48 bytes a
+    // texel).
     [](const Params& p, std::uint64_t) {
-        const int maps = p.get(adaptive::kMaxMaps);
+        const int maps = adaptive::mapLayers(p.get(adaptive::kMaxMaps), p.get(kMapSize));
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
-        MemoryTerms out = {shadowMapArrayTerm(p, maps),
-                           shadowMapArrayTerm(p, std::min(adaptive::kScratchLayers, maps))};
-        out[1].what = "the scratch maps";
+        MemoryTerms out = {shadowMapArrayTerm(p, maps)};
+        if (p.getEnum(adaptive::kEvaluation) == adaptive::Evaluation::Accumulate) {
+            out.push_back(shadowMapArrayTerm(p, 1));
+            out.back().what = "the scratch map";
+        }
         out.push_back(
             {"technique.map_size", "the light-view G-buffer", saturatingProduct({m, m, 48})});
         return out;

@@ -3,8 +3,11 @@
 // light-sample maps and choosing the quadtree cells to split).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/passes/gbuffer.h"
@@ -12,6 +15,7 @@
 #include "renderer/techniques/adaptive/error_budget.h"
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/adaptive/pixel_error_budget.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -25,6 +29,7 @@ enum class Reprojection { Camera, LightCentre };
 enum class MetricArea { Map, Screen };
 enum class Subdivision { Auto, Quad, Linear };
 enum class Evaluation { Array, Accumulate };
+enum class Estimate { Sum, Rss };
 using Weighting = LightQuadtree::Weighting;
 
 inline constexpr EnumKey<Metric, 3> kMetric{"metric", {"error", "global", "tile"}};
@@ -35,6 +40,7 @@ inline constexpr EnumKey<MetricArea, 2> kMetricArea{"metric_area", {"map", "scre
 inline constexpr EnumKey<Subdivision, 3> kSubdivision{"subdivision", {"auto", "quad", "linear"}};
 inline constexpr EnumKey<Weighting, 3> kWeights{"weights", {"area", "paper", "equal"}};
 inline constexpr EnumKey<Evaluation, 2> kEvaluation{"evaluation", {"array", "accumulate"}};
+inline constexpr EnumKey<Estimate, 2> kEstimate{"estimate", {"sum", "rss"}};
 
 inline constexpr FloatKey kTargetError{"target_error"};
 inline constexpr FloatKey kEpsilon{"epsilon"};
@@ -54,8 +60,13 @@ inline constexpr std::array kAdaptiveParams = {
               "metric 5.1 asks for)"),
     floatParam(kTargetError, 0.02, 0.0, 1.0,
                "metric \"error\": the shadow-region error of visibility (mean |V - V_true| over "
-               "shadowed pixels) that the light's subdivision may leave; a cell's estimate is "
-               "1/4 x its share of the light x its disagreeing over the shadowed pixels"),
+               "shadowed pixels) that the light's subdivision may leave: a cell whose corners "
+               "disagree at a pixel leaves 1/4 x its share of the light there"),
+    enumParam(kEstimate, Estimate::Sum,
+              "metric \"error\": how the cells' errors at one pixel combine: sum (an upper "
+              "bound, 1.1-9x the error measured) or rss (root sum of squares calibrated on five "
+              "conformance scenes: 0.5-1.05x the error on the corpus, cheaper but under the "
+              "estimate where edges parallel to the light's make cells err alike)"),
     floatParam(kEpsilon, 0.003, 0.0, 1.0,
                "metric \"global\": refine when disagreeing pixels / metric area >= epsilon "
                "(eq. 4)"),
@@ -78,8 +89,10 @@ inline constexpr std::array kAdaptiveParams = {
     intParam(kCompareStride, 2, 1, 8,
              "compare at every k-th pixel along x and y of the comparison view, counting each "
              "disagreement as k^2 pixels (1: every pixel, as the paper)"),
-    intParam(kMaxDepth, 3, 0, 8, "deepest quadtree level"),
-    intParam(kMaxMaps, 81, 4, 1024, "most shadow maps per light (refinement stops there)"),
+    intParam(kMaxDepth, 4, 0, 8, "deepest quadtree level"),
+    intParam(kMaxMaps, 289, 4, 1024,
+             "most shadow maps per light (refinement stops there; 289: the full depth-4 grid); "
+             "lowered to the maps that fit 2 GiB (128 of 2048^2)"),
     enumParam(kSubdivision, Subdivision::Auto,
               "quad: 2D quadtree; linear: 1D halving along the light's width; auto: linear when "
               "the light's height is below 1/1000 of its width (the scene format rejects 0)"),
@@ -99,12 +112,22 @@ inline constexpr std::array kAdaptiveParams = {
     kDepthBiasParam,
 };
 
-// Maps rendered per draw into the scratch array before they are copied to their layers.
+// Maps rendered per layered draw.
 inline constexpr int kScratchLayers = 16;
+
+// The most bytes of the array of maps (it grows to max_maps): at larger map sizes max_maps is
+// lowered to what fits (128 maps of 2048^2), never below the 4 corners.
+inline constexpr std::uint64_t kMaxArrayBytes = std::uint64_t{2} << 30;
+inline int mapLayers(int max_maps, int map_size) {
+    const auto per_map = std::uint64_t(map_size) * std::uint64_t(map_size) * 4;
+    return std::max(
+        4, int(std::min<std::uint64_t>(std::uint64_t(max_maps), kMaxArrayBytes / per_map)));
+}
 
 // What refining a light's quadtree found, for the statistics.
 struct Refinement {
     int comparisons = 0;
+    int queries = 0;  // occlusion queries (the bits path compares on the CPU)
     bool budget_hit = false;
     double estimated_error = 0.0;  // metric "error"
 };
@@ -126,6 +149,25 @@ private:
     // disagree (RECEIVERS: the pixels compared; AREA: the metric's pixel count).
     Refinement refine(frame::FrameContext& ctx, LightQuadtree& tree,
                       const passes::GBuffer& receivers, double area);
+
+    // The comparison counts of CELLS' diagonals (tree.comparisons() order), one occlusion query
+    // per pair, with COUNT_SHADOWED the pixels any root corner shadows last.
+    std::vector<CompareResult> compareByQueries(const LightQuadtree& tree,
+                                                const std::vector<QuadtreeCell>& cells,
+                                                const passes::GBuffer& receivers,
+                                                const scene::RectLight& light, int level,
+                                                bool count_shadowed);
+    // Metric "error" on shadow bits: compares CELLS from one pass over the level's corner
+    // maps (each read once, however many cells share it) and splits those SUM_BUDGET chooses
+    // (estimate "sum") or BUDGET (estimate "rss", made at level 0 from the pixels the root
+    // corners shadow), within the map budget; returns the children.
+    std::vector<QuadtreeCell> refineByBits(frame::FrameContext& ctx, LightQuadtree& tree,
+                                           const std::vector<QuadtreeCell>& cells,
+                                           const passes::GBuffer& receivers, int level,
+                                           ErrorBudget& sum_budget,
+                                           std::optional<PixelErrorBudget>& budget, Refinement& r);
+    // Metric "error" on hard-test comparisons: the counts come from shadow bits.
+    bool bitsPath() const { return error_metric_ && compare_.tests && compare_.tile_size == 0; }
 
     // Adds the light's maps, weighted, into its visibility.
     void evaluate(frame::FrameContext& ctx, const LightQuadtree& tree);
@@ -159,6 +201,9 @@ private:
     // Renders the samples without a map yet into their layers of maps_ (one pass per level).
     void renderNewMaps(frame::FrameContext& ctx, const LightQuadtree& tree, int level);
 
+    // Grows maps_ to at least N layers, keeping its first FILLED maps.
+    void reserveMaps(int filled, int n);
+
     // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).
     void copyToMaps(int base, int count);
 
@@ -179,6 +224,9 @@ private:
     int max_maps_;
     LightQuadtree::Weighting weighting_;
     bool accumulate_path_;
+    bool rss_estimate_;
+    double shadowed_ = 0;  // the bits path: pixels any root corner shadows, this light
+    bool vertex_layer_ = false;
     Subdivision subdivision_;
     bool jitter_;
     unsigned seed_;

@@ -12,7 +12,10 @@ namespace {
 
 MapCompare::MapCompare()
     : program_(gl::buildProgram("adaptive compare",
-                                {"passes/fullscreen.vert", "techniques/adaptive/compare.frag"})) {
+                                {"passes/fullscreen.vert", "techniques/adaptive/compare.frag"})),
+      bits_program_(
+          gl::buildProgram("adaptive shadow bits",
+                           {"passes/fullscreen.vert", "techniques/adaptive/shadow_bits.frag"})) {
     glCreateSamplers(1, &sampler_);
     glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -29,19 +32,9 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
                        const scene::RectLight& light, const CompareSettings& s, int count) {
     used_ = 0;
     tiles_ = 0;
-    stride_ = std::max(s.stride, 1);
-    const int w = (gbuffer.width() + stride_ - 1) / stride_;
-    const int h = (gbuffer.height() + stride_ - 1) / stride_;
-    if (w != width_ || h != height_ || !levels_.id()) {
-        levels_ = gl::createTexture2D(GL_R32F, w, h, "adaptive comparison levels");
-        fbo_ = gl::createFramebuffer("adaptive comparisons");
-        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, levels_.id(), 0);
-        width_ = w;
-        height_ = h;
-        clearLevels();
-    }
+    resize(gbuffer, s.stride);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, width_, height_);
     if (s.tile_size > 0) {
         const int tx = (gbuffer.width() + s.tile_size - 1) / s.tile_size;
         const int ty = (gbuffer.height() + s.tile_size - 1) / s.tile_size;
@@ -77,6 +70,74 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
     glEnable(GL_BLEND);
     glBlendEquation(GL_MAX);
     glBlendFunc(GL_ONE, GL_ONE);
+}
+
+void MapCompare::resize(const passes::GBuffer& gbuffer, int stride) {
+    stride_ = std::max(stride, 1);
+    const int w = (gbuffer.width() + stride_ - 1) / stride_;
+    const int h = (gbuffer.height() + stride_ - 1) / stride_;
+    if (w == width_ && h == height_ && levels_.id()) return;
+    levels_ = gl::createTexture2D(GL_R32F, w, h, "adaptive comparison levels");
+    fbo_ = gl::createFramebuffer("adaptive comparisons");
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, levels_.id(), 0);
+    bits_ = gl::createTexture2D(GL_RGBA32UI, w, h, "adaptive shadow bits");
+    bits_fbo_ = gl::createFramebuffer("adaptive shadow bits");
+    glNamedFramebufferTexture(bits_fbo_.id(), GL_COLOR_ATTACHMENT0, bits_.id(), 0);
+    width_ = w;
+    height_ = h;
+    clearLevels();
+}
+
+ShadowBits MapCompare::shadowBits(const passes::GBuffer& gbuffer,
+                                  const passes::ShadowMapBatch& maps, const scene::RectLight& light,
+                                  const CompareSettings& s, const std::vector<int>& views) {
+    constexpr int kPerPass = 128;  // shadow_bits.frag's uvec4
+    resize(gbuffer, s.stride);
+    ShadowBits out;
+    out.pixels = size_t(width_) * size_t(height_);
+    const int passes = std::max(1, (int(views.size()) + kPerPass - 1) / kPerPass);
+    out.words = 4 * passes;
+    out.scale = double(stride_) * double(stride_);
+    out.bits.assign(out.pixels * size_t(out.words), 0u);
+    glBindFramebuffer(GL_FRAMEBUFFER, bits_fbo_.id());
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(bits_program_.id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps.depth().id());
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
+    gl::setUniform(bits_program_, "u_stride", stride_);
+    gl::setUniform(bits_program_, "u_normal_offset", s.normal_offset);
+    gl::setUniform(bits_program_, "u_depth_bias", s.depth_bias);
+    passes::setLightFrameUniforms(bits_program_, light);
+    std::vector<GLuint> chunk(out.pixels * 4);
+    for (int k = 0; k < passes; ++k) {
+        const int first = k * kPerPass;
+        const int count = std::min(kPerPass, int(views.size()) - first);
+        gl::setUniform(bits_program_, "u_count", count);
+        glProgramUniform1iv(bits_program_.id(), glGetUniformLocation(bits_program_.id(), "u_list"),
+                            count, views.data() + first);
+        const GLuint zero[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferuiv(bits_fbo_.id(), GL_COLOR, 0, zero);
+        fullscreen_.draw();
+        glGetTextureImage(bits_.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                          GLsizei(chunk.size() * sizeof(GLuint)), chunk.data());
+        for (size_t p = 0; p < out.pixels; ++p)
+            for (size_t w = 0; w < 4; ++w)
+                out.bits[p * size_t(out.words) + size_t(4 * k) + w] = chunk[4 * p + w];
+    }
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);
+    glUseProgram(0);
+    return out;
+}
+
+void MapCompare::raiseLevels(const std::vector<std::uint32_t>& pixels, int level) {
+    raised_.resize(size_t(width_) * size_t(height_), 0.0f);
+    for (std::uint32_t p : pixels)
+        if (p < raised_.size()) raised_[p] = std::max(raised_[p], float(level + 1));
+    glTextureSubImage2D(levels_.id(), 0, 0, 0, width_, height_, GL_RED, GL_FLOAT, raised_.data());
 }
 
 void MapCompare::compare(int a, int b, int level) {
@@ -142,6 +203,7 @@ void MapCompare::writeLevels(GLuint dst) const {
 }
 
 void MapCompare::clearLevels() {
+    std::fill(raised_.begin(), raised_.end(), 0.0f);
     if (!levels_.id()) return;  // begin() creates them cleared
     const float zero = 0.0f;
     glClearTexImage(levels_.id(), 0, GL_RED, GL_FLOAT, &zero);

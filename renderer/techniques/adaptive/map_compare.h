@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "renderer/gl/handles.h"
@@ -12,6 +13,7 @@
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/scene/scene.h"
+#include "renderer/techniques/adaptive/shadow_bits.h"
 
 namespace penumbra::techniques::adaptive {
 
@@ -51,6 +53,14 @@ public:
     void countShadowed(std::array<int, 4> views);
     // Restores state; the results of this series, in compare() order (blocking).
     std::vector<CompareResult> end();
+    // Which of VIEWS shadow every stride-th pixel of GBUFFER (hard tests with SETTINGS' offset
+    // and bias; one pass per 128 views), bit i for VIEWS[i] (blocking). Series of queued
+    // comparisons must not be open.
+    ShadowBits shadowBits(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& maps,
+                          const scene::RectLight& light, const CompareSettings& settings,
+                          const std::vector<int>& views);
+    // Raises the levels to LEVEL + 1 at PIXELS (indices, of the last shadowBits()).
+    void raiseLevels(const std::vector<std::uint32_t>& pixels, int level);
     // Writes max(level + 1) of the disagreements of every series since the last
     // clearLevels(), scaled up by the stride, into colour 1 of framebuffer DST (whose draw
     // buffers are colours 0 and 1).
@@ -60,10 +70,16 @@ public:
 
 private:
     void queue(int mode, std::array<int, 4> views, int level);
+    // Sizes levels_ (cleared) and the bit target to GBUFFER / STRIDE.
+    void resize(const passes::GBuffer& gbuffer, int stride);
 
     gl::Program program_;
+    gl::Program bits_program_;  // shadow_bits.frag
+    gl::Texture bits_;          // RGBA32UI, the size of levels_
+    gl::Framebuffer bits_fbo_;
     passes::Fullscreen fullscreen_;
-    gl::Texture levels_;  // R32F, the G-buffer's size / stride
+    gl::Texture levels_;         // R32F, the G-buffer's size / stride
+    std::vector<float> raised_;  // levels_ as raiseLevels() left them
     gl::Framebuffer fbo_;
     int width_ = 0, height_ = 0, stride_ = 1;  // of levels_
     unsigned sampler_ = 0;                     // nearest, no depth compare: raw depths of the maps

@@ -1,6 +1,7 @@
-// `adaptive`'s quadtree refinement: the light-sample maps of new quadtree samples (rendered in
-// scratch batches, copied to their layers), the light-centre reprojection view (4.1), and the
-// choice of cells to split by the comparison counts, within the map budget (see adaptive.h).
+// `adaptive`'s quadtree refinement: the light-sample maps of new quadtree samples (rendered into
+// their layers, or into a scratch map and copied, on the accumulation path), the light-centre
+// reprojection view (4.1), and the choice of cells to split by the comparison counts, within the
+// map budget (see adaptive.h).
 #include "renderer/techniques/adaptive/adaptive.h"
 
 #include <algorithm>
@@ -105,6 +106,7 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
     }
     const int n = static_cast<int>(views_.size());
     if (first == n) return;
+    reserveMaps(first, n);
     if (accumulate_path_) {
         // Each map is added with its unnormalised weight as soon as it exists (3.4.1); the
         // G-buffer is the camera depth pre-pass, so only visible receivers accumulate.
@@ -125,13 +127,25 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
         return;
     }
     views_buffer_.upload(views_);
+    // Straight into their layers (layer = view index), kScratchLayers per draw.
     ctx.pass("adaptive_maps[" + std::to_string(level) + "]", [&] {
-        for (int base = first; base < n; base += scratch_->layers()) {
-            const int count = std::min(scratch_->layers(), n - base);
-            scratch_->render(ctx.gpu, base, count);
-            copyToMaps(base, count);
-        }
+        for (int base = first; base < n; base += kScratchLayers)
+            maps_->render(ctx.gpu, base, std::min(kScratchLayers, n - base), base);
     });
+}
+
+// Grows maps_ to at least N layers (twice its layers, at least 25, at most max_maps), keeping
+// its first FILLED maps: its memory follows the refinement a scene reaches, not max_maps.
+void Adaptive::reserveMaps(int filled, int n) {
+    if (maps_ && maps_->layers() >= n) return;
+    const int layers = std::min(max_maps_, std::max({n, maps_ ? 2 * maps_->layers() : 0, 25}));
+    auto grown =
+        std::make_unique<passes::ShadowMapBatch>(settings_.map_size, layers, vertex_layer_);
+    if (maps_ && filled > 0)
+        glCopyImageSubData(maps_->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0,
+                           grown->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, settings_.map_size,
+                           settings_.map_size, filled);
+    maps_ = std::move(grown);
 }
 
 // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).

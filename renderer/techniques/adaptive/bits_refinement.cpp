@@ -1,0 +1,73 @@
+// `adaptive`'s default refinement (metric "error" on hard tests): one pass per level tells which
+// of the level's corner maps shadow each pixel, the CPU compares every cell's diagonals on those
+// bits and the per-pixel error budget picks the cells to split (see adaptive.h).
+#include <cmath>
+#include <string>
+
+#include "renderer/techniques/adaptive/adaptive.h"
+
+namespace penumbra::techniques::adaptive {
+
+std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, LightQuadtree& tree,
+                                                 const std::vector<QuadtreeCell>& cells,
+                                                 const passes::GBuffer& receivers, int level,
+                                                 ErrorBudget& sum_budget,
+                                                 std::optional<PixelErrorBudget>& budget,
+                                                 Refinement& r) {
+    // Each corner map of the level gets one slot, shared by every cell it is a corner of.
+    std::vector<int> views, slot(tree.samples().size(), -1);
+    auto slotOf = [&](int view) {
+        if (slot[size_t(view)] < 0) {
+            slot[size_t(view)] = int(views.size());
+            views.push_back(view);
+        }
+        return slot[size_t(view)];
+    };
+    std::vector<std::vector<std::pair<int, int>>> pairs(cells.size());
+    for (size_t i = 0; i < cells.size(); ++i)
+        for (auto [a, b] : tree.comparisons(cells[i])) pairs[i].push_back({slotOf(a), slotOf(b)});
+    std::vector<int> corners;
+    if (level == 0)
+        for (int v : tree.linear() ? std::vector{0, 1} : std::vector{0, 1, 2, 3})
+            corners.push_back(slotOf(v));
+    ShadowBits bits;
+    ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
+        bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
+    });
+    if (level == 0) {
+        shadowed_ = bits.anyShadowed(corners);
+        const double per_pixel = shadowed_ > 0 ? kErrorCalibration * bits.scale / shadowed_ : 0.0;
+        if (rss_estimate_) budget.emplace(target_error_, bits.pixels, per_pixel);
+    }
+    std::vector<double> errors;
+    std::vector<std::vector<std::uint32_t>> where;
+    std::vector<std::uint32_t> any;  // the diagnostic: pixels where some cell disagrees
+    for (size_t i = 0; i < cells.size(); ++i) {
+        r.comparisons += int(pairs[i].size());
+        where.push_back(bits.disagreeing(pairs[i]));
+        errors.push_back(kDisagreementError *
+                         std::ldexp(1.0, -(tree.linear() ? 1 : 2) * cells[i].depth));
+        any.insert(any.end(), where.back().begin(), where.back().end());
+    }
+    if (!light_centre_) map_compare_->raiseLevels(any, level);
+    if (!rss_estimate_) {  // the sum: each cell's worse diagonal, as the queries count it
+        std::vector<CompareResult> counts;
+        for (size_t i = 0; i < cells.size(); ++i)
+            for (const auto& pair : pairs[i])
+                counts.push_back(
+                    {double(bits.disagreeing(std::span(&pair, 1)).size()) * bits.scale, 0.0});
+        return splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
+    }
+    std::vector<QuadtreeCell> next;
+    for (size_t i : budget->choose(errors, where)) {
+        if (!fitsMapBudget(tree, cells[i])) {
+            r.budget_hit = true;
+            budget->refused(i);
+            continue;
+        }
+        for (const auto& child : tree.split(cells[i])) next.push_back(child);
+    }
+    return next;
+}
+
+}  // namespace penumbra::techniques::adaptive
