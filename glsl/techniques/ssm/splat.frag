@@ -26,6 +26,7 @@ flat in int v_object;
 flat in int v_separated;
 flat in int v_children;  // micro-patches per side merged into this one (lod.comp)
 flat in ivec2 v_texel;   // its (first) occluder texel
+flat in float v_reach;   // far side: its surface's depth span beyond it (splat.vert)
 
 // A merged patch's micro-patches (a receiver near it in depth counts them one by one)
 layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;  // linear
@@ -114,7 +115,8 @@ void main() {
     float dr = texelFetch(u_receiver, ivec3(texel, u_layer), 0).r;
     if (dr >= 1.0) discard;
     float zr = u_receiver_near + dr * u_receiver_range;
-    if (zr - v_depth_near <= u_depth_bias * zr) discard;  // no micro-patch in front of it
+    // No micro-patch in front of it (nor, far side, its surface's span)
+    if (zr - v_depth_near <= u_depth_bias * zr + v_reach) discard;
     vec3 p = vec3((u_ssm_lo + (vec2(texel) + 0.5) * u_ssm_texel) * zr, zr);
     // A patch does not shadow its own object's surface unless it lies apart from it (splat.vert)
     // or wholly above that surface's tangent plane here (a head over the body it rests on).

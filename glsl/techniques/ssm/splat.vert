@@ -40,6 +40,12 @@ uniform float u_receiver_range;
 // object has another light-facing surface beyond it at the patch's place (an ear over a
 // head), never the surface it lies on (a convex object hides only what its horizon does).
 layout(binding = SSM_UNIT_SPLAT_OCC_IDS) uniform isampler2D u_occ_ids;
+// The side's linear occluder depth, for the far side's slope (u_far_side)
+layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;
+uniform int u_far_side;  // 1: the farthest-surface map of two_sided (empty texels 0)
+uniform float u_occ_near;
+uniform float u_occ_range;
+flat out float v_reach;  // far side: the depth its texel's surface spans beyond the patch
 layout(binding = SSM_UNIT_SPLAT_LAYER_DEPTHS) uniform sampler2DArray u_layer_depths;
 layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 uniform int u_layer_count;
@@ -57,6 +63,31 @@ flat out float v_depth_near;  // its nearest micro-patch's distance (merged, lod
 flat out int v_children;      // micro-patches per side merged into it (lod.comp), 1 unmerged
 flat out ivec2 v_texel;       // its (first) occluder texel
 flat out float v_depth;       // its distance from the light
+
+// The far side's patch at TEXEL, depth Z, stands for the farthest surface in its texel; where
+// that surface is steep (a box's side wall seen from the light's centre) the patch hovers over
+// the receiver at the wall's foot and hides much of the light from it, which the wall does
+// not. Its reach: kReachSteps times the most its depth differs from a 4-neighbour's, the
+// surface's fall over that many texels; receivers within it are not shadowed by the patch.
+// Measured on box_resting (floor MAE against exact; one-sided 0.0025): 0.0130 without,
+// 0.0071 at 4 steps, 0.0037 at 8.
+const float kReachSteps = 8.0;
+float reach(ivec2 texel, float z) {
+    float most = 0.0;
+    ivec2 last = textureSize(u_occ_depth, 0) - 1;
+    for (int i = 0; i < 4; ++i) {
+        ivec2 n = clamp(texel + ivec2(i == 0   ? 1
+                                      : i == 1 ? -1
+                                               : 0,
+                                      i == 2   ? 1
+                                      : i == 3 ? -1
+                                               : 0),
+                        ivec2(0), last);
+        float d = texelFetch(u_occ_depth, n, 0).r;
+        if (d != 0.0) most = max(most, abs(u_occ_near + d * u_occ_range - z));
+    }
+    return kReachSteps * most;
+}
 
 void main() {
     Patch p = u_patches[gl_InstanceID];
@@ -103,6 +134,7 @@ void main() {
     v_depth_near = p.z_near;
     v_children = int(width);
     v_texel = texel;
+    v_reach = u_far_side == 1 ? reach(texel, p.z) : 0.0;
     v_object = texelFetch(u_occ_ids, texel, 0).r;
     v_separated = 0;
     if (u_layer_count > 1) {
