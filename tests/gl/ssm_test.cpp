@@ -97,7 +97,7 @@ TEST(SsmGL, TwoSidedHelpsOnABox) {
     auto with = [](const std::string& extra) {
         return tiltedBox(ssm(R"(, "map_size": 64, "ssm_size": 64)" + extra));
     };
-    const double one = shadowMae(ref, with("")),
+    const double one = shadowMae(ref, with(R"(, "two_sided": false)")),
                  two = shadowMae(ref, with(R"(, "two_sided": true)"));
     std::printf("ssm 64 box: shadow-region MAE one-sided %.5f, two-sided %.5f\n", one, two);
     EXPECT_LT(two, one);
@@ -143,8 +143,9 @@ TEST(SsmGL, AFlatOccluderAtAnyHeightCastsItsShadow) {
 }
 
 TEST(SsmGL, TwoSidedEqualsOneSidedForAFlatOccluder) {
-    auto one = renderScene("closed_form.json",
-                           {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64)")}});
+    auto one = renderScene(
+        "closed_form.json",
+        {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64, "two_sided": false)")}});
     auto two =
         renderScene("closed_form.json",
                     {{"technique", ssm(R"(, "map_size": 64, "ssm_size": 64, "two_sided": true)")}});
@@ -234,7 +235,7 @@ TEST(SsmGL, TwoSidedKeepsTheContactShadowOfARestingBox) {
         return renderScene("closed_form.json", o);
     };
     const auto ref = with(penumbra::testing::kGroundTruth);
-    const double one = shadowMae(ref, with(ssm())),
+    const double one = shadowMae(ref, with(ssm(R"(, "two_sided": false)"))),
                  two = shadowMae(ref, with(ssm(R"(, "two_sided": true)")));
     std::printf("ssm resting box: floor shadow-region MAE one-sided %.5f, two-sided %.5f\n", one,
                 two);

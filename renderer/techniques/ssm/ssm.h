@@ -44,7 +44,7 @@ inline constexpr std::array kSsmParams = {
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
-    boolParam(kTwoSided, false,
+    boolParam(kTwoSided, true,
               "also splat the farthest (back) occluder surfaces into a second map, merged by max")
         .define(),
     enumParam(kPath, PatchPath::Gpu,
