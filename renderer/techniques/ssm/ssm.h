@@ -34,6 +34,7 @@ inline constexpr BoolKey kClip{"clip"};
 inline constexpr IntKey kLayers{"layers"};
 inline constexpr FloatKey kLod{"lod"};
 inline constexpr FloatKey kLodDepth{"lod_depth"};
+inline constexpr FloatKey kFarReach{"far_reach"};
 
 inline constexpr std::array kSsmParams = {
     intParam(kMapSize, 256, 16, 4096, "occluder map width and height in texels")
@@ -54,6 +55,10 @@ inline constexpr std::array kSsmParams = {
         .define(),
     floatParam(kDepthBias, 0.002, 0.0, 0.5,
                "a micro-patch shadows a receiver only when nearer by this fraction of its depth")
+        .uniform(),
+    floatParam(kFarReach, 0.0, 0.0, 64.0,
+               "two_sided: a far-side patch spares the receivers within this many times its "
+               "largest depth step to a neighbour (a steep wall's foot); 0: off")
         .uniform(),
     intParam(kLayers, 4, 1, 8,
              "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
