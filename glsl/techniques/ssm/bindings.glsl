@@ -17,6 +17,12 @@
 #define SSM_IMAGE_PLANES_TARGET 0
 // compact.comp
 #define SSM_UNIT_COMPACT_OCCLUDER 0
+// lod.comp
+#define SSM_UNIT_LOD_DEPTH 0
+#define SSM_UNIT_LOD_IDS 1
+#define SSM_UNIT_LOD_PYRAMID 2
+#define SSM_IMAGE_LOD_LEVEL 0
+#define SSM_IMAGE_LOD_PATCHES 1
 // splat.vert and splat.frag
 #define SSM_UNIT_SPLAT_RECEIVER 1
 #define SSM_UNIT_SPLAT_RECEIVER_MAX 2
@@ -24,6 +30,7 @@
 #define SSM_UNIT_SPLAT_LAYER_DEPTHS 7
 #define SSM_UNIT_SPLAT_LAYER_IDS 8
 #define SSM_UNIT_SPLAT_PLANES 9
+#define SSM_UNIT_SPLAT_OCC_DEPTH 10  // the side's linear occluder depth (merged patches)
 // visibility.frag
 #define SSM_UNIT_VISIBILITY_POSITION 0
 #define SSM_UNIT_VISIBILITY_ID 1
@@ -31,6 +38,8 @@
 #define SSM_UNIT_VISIBILITY_SSM 3
 #define SSM_UNIT_VISIBILITY_SSM_BACK 4
 #define SSM_UNIT_VISIBILITY_LAYERS 5
+// A micro-patch's texel index holds its lod level from this bit (micro_patches.h kLevelShift)
+#define SSM_LEVEL_SHIFT 24
 // Buffers
 #define SSM_BINDING_COUNTERS 3  // splat.vert's Counters
 #define SSM_BINDING_PATCHES 4   // splat.vert's and compact.comp's Patches

@@ -8,20 +8,25 @@
 #include "techniques/ssm/bindings.glsl"
 #define SCAN_INVOCATIONS 256  // phase 1's one group (phases 0 and 2: one run per invocation)
 layout(local_size_x = SCAN_INVOCATIONS) in;
-// Linear depth in [0, 1] of the window
+// Linear depth in [0, 1] of the window; with `lod`, lod.comp's map: (depth, level, nearest
+// depth); u_merged says which
 layout(binding = SSM_UNIT_COMPACT_OCCLUDER) uniform sampler2D u_occluder;
 uniform int u_phase;
-uniform int u_run;          // texels per run
-uniform int u_runs;         // runs: the map's texels / u_run, rounded up
-uniform float u_empty;      // the cleared depth: 1 (nearest map) or 0 (farthest map)
+uniform int u_run;      // texels per run
+uniform int u_runs;     // runs: the map's texels / u_run, rounded up
+uniform float u_empty;  // the cleared depth: 1 (nearest map) or 0 (farthest map)
+uniform int u_merged;
 uniform float u_occ_near;
 uniform float u_occ_range;  // far - near
 
 struct Patch {
-    uint texel;  // y * map size + x
-    float z;     // distance from the light
+    uint texel;    // y * map size + x, plus the level << SSM_LEVEL_SHIFT (a 2^level block)
+    float z;       // distance from the light (a merged block's: the middle of its depths)
+    float z_near;  // its nearest micro-patch's
 };
-layout(std430, binding = SSM_BINDING_PATCHES) writeonly buffer Patches { Patch u_patches[]; };
+layout(std430, binding = SSM_BINDING_PATCHES) writeonly buffer Patches {
+    Patch u_patches[];
+};
 layout(std430, binding = SSM_BINDING_COMMAND) buffer Command {
     uint u_vertices;  // 4, set by the host
     uint u_instances;
@@ -29,7 +34,9 @@ layout(std430, binding = SSM_BINDING_COMMAND) buffer Command {
     uint u_base_instance;
 };
 // Per run: its patch count (phase 0), then its first slot (phase 1)
-layout(std430, binding = SSM_BINDING_RUNS) buffer Runs { uint u_runs_slot[]; };
+layout(std430, binding = SSM_BINDING_RUNS) buffer Runs {
+    uint u_runs_slot[];
+};
 
 shared uint s_scan[SCAN_INVOCATIONS];
 
@@ -59,9 +66,11 @@ void firstSlots() {
     if (i == uint(SCAN_INVOCATIONS) - 1u) u_instances = s_scan[i];
 }
 
-// The linear depth of texel T (row-major) of the map, WIDTH texels wide.
-float depthAt(uint t, int width) {
-    return texelFetch(u_occluder, ivec2(int(t) % width, int(t) / width), 0).r;
+// The linear depth, level and nearest depth of texel T (row-major) of the map, WIDTH texels
+// wide.
+vec3 depthAt(uint t, int width) {
+    vec4 v = texelFetch(u_occluder, ivec2(int(t) % width, int(t) / width), 0);
+    return u_merged == 1 ? v.xyz : vec3(v.x, 0.0, v.x);
 }
 
 void main() {
@@ -75,13 +84,16 @@ void main() {
     uint first = r * uint(u_run), end = min(first + uint(u_run), uint(size.x * size.y));
     if (u_phase == 0) {
         uint count = 0u;
-        for (uint t = first; t < end; ++t) count += depthAt(t, size.x) != u_empty ? 1u : 0u;
+        for (uint t = first; t < end; ++t) count += depthAt(t, size.x).x != u_empty ? 1u : 0u;
         u_runs_slot[r] = count;
         return;
     }
     uint slot = u_runs_slot[r];
     for (uint t = first; t < end; ++t) {
-        float d = depthAt(t, size.x);
-        if (d != u_empty) u_patches[slot++] = Patch(t, u_occ_near + d * u_occ_range);
+        vec3 d = depthAt(t, size.x);
+        if (d.x != u_empty)
+            u_patches[slot++] =
+                Patch(t | (uint(d.y) << SSM_LEVEL_SHIFT), u_occ_near + d.x * u_occ_range,
+                      u_occ_near + d.z * u_occ_range);
     }
 }

@@ -8,21 +8,24 @@
 #define CLIP 0
 #endif
 
-uniform vec2 u_light_half;    // half the light's width and height
-uniform vec2 u_ssm_lo;        // soft-shadow-map window at distance 1
+uniform vec2 u_light_half;  // half the light's width and height
+uniform vec2 u_ssm_lo;      // soft-shadow-map window at distance 1
 uniform vec2 u_ssm_size;
-uniform int u_ssm_res;        // soft-shadow-map texels per side
-uniform float u_receiver_far; // farthest receiver: the virtual plane of the penumbra extent
+uniform int u_ssm_res;         // soft-shadow-map texels per side
+uniform float u_receiver_far;  // farthest receiver: the virtual plane of the penumbra extent
 uniform int u_layer;  // the receiver layer drawn: micro-patches are counted in layer 0 only
 
 struct Patch {
-    uint texel;  // y * map size + x
-    float z;     // distance from the light
+    uint texel;  // y * map size + x, plus the level << SSM_LEVEL_SHIFT (a 2^level block, lod.comp)
+    float z;     // distance from the light (a merged block's: the middle of its depths)
+    float z_near;  // its nearest micro-patch's
 };
-layout(std430, binding = SSM_BINDING_PATCHES) readonly buffer Patches { Patch u_patches[]; };
+layout(std430, binding = SSM_BINDING_PATCHES) readonly buffer Patches {
+    Patch u_patches[];
+};
 uniform int u_map_size;
-uniform vec2 u_occ_lo;       // occluder-map window at distance 1
-uniform vec2 u_occ_texel;    // one texel of it
+uniform vec2 u_occ_lo;     // occluder-map window at distance 1
+uniform vec2 u_occ_texel;  // one texel of it
 
 #if CLIP
 // Farthest receiver depth (linear, -1 = none) per texel of the receiver map, max-reduced per level.
@@ -32,12 +35,17 @@ layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_
 uniform float u_receiver_near;
 uniform float u_receiver_range;
 
-
 // Self-shadowing (several receiver layers): the object of each occluder texel, and the receiver
 // layers' depths and objects. A patch shadows receivers of its own object only where that
 // object has another light-facing surface beyond it at the patch's place (an ear over a
 // head), never the surface it lies on (a convex object hides only what its horizon does).
 layout(binding = SSM_UNIT_SPLAT_OCC_IDS) uniform isampler2D u_occ_ids;
+// The side's linear occluder depth, for the far side's slope (u_far_side)
+layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;
+uniform int u_far_side;  // 1: the farthest-surface map of two_sided (empty texels 0)
+uniform float u_occ_near;
+uniform float u_occ_range;
+flat out float v_reach;  // far side: the depth its texel's surface spans beyond the patch
 layout(binding = SSM_UNIT_SPLAT_LAYER_DEPTHS) uniform sampler2DArray u_layer_depths;
 layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 uniform int u_layer_count;
@@ -50,15 +58,63 @@ layout(std430, binding = SSM_BINDING_COUNTERS) buffer Counters {
     uint u_texels_touched;
 };
 
-flat out vec4 v_patch;  // micro-patch in the light's frame at its depth (x0, y0, x1, y1)
-flat out float v_depth; // its distance from the light
+flat out vec4 v_rect;         // micro-patch in window units at distance 1 (x0, y0, x1, y1)
+flat out float v_depth_near;  // its nearest micro-patch's distance (merged, lod.comp)
+flat out int v_children;      // micro-patches per side merged into it (lod.comp), 1 unmerged
+flat out ivec2 v_texel;       // its (first) occluder texel
+flat out float v_depth;       // its distance from the light
+
+// The far side's patch at TEXEL, depth Z, stands for the farthest surface in its texel; where
+// that surface is steep (a box's side wall seen from the light's centre) the patch hovers over
+// the receiver at the wall's foot and hides much of the light from it, which the wall does
+// not. Its reach: u_far_reach times the most its depth differs from a 4-neighbour's, the
+// surface's fall over that many texels; receivers within it are not shadowed by the patch.
+uniform float u_far_reach;
+float reach(ivec2 texel, float z) {
+    float most = 0.0;
+    ivec2 last = textureSize(u_occ_depth, 0) - 1;
+    for (int i = 0; i < 4; ++i) {
+        ivec2 n = clamp(texel + ivec2(i == 0   ? 1
+                                      : i == 1 ? -1
+                                               : 0,
+                                      i == 2   ? 1
+                                      : i == 3 ? -1
+                                               : 0),
+                        ivec2(0), last);
+        float d = texelFetch(u_occ_depth, n, 0).r;
+        if (d != 0.0) most = max(most, abs(u_occ_near + d * u_occ_range - z));
+    }
+    return u_far_reach * most;
+}
+
+// 1 when the patch RECT (window units) at distance Z lies apart from OBJECT's next
+// light-facing surface beyond it, at the patch's centre on the soft shadow map (an ear over a
+// head); 0 with one receiver layer.
+int separated(vec4 rect, float z, int object) {
+    if (u_layer_count <= 1) return 0;
+    vec2 centre = 0.5 * (rect.xy + rect.zw);
+    ivec2 s = clamp(ivec2((centre - u_ssm_lo) / u_ssm_size * float(u_ssm_res)), ivec2(0),
+                    ivec2(u_ssm_res - 1));
+    int apart = 0;
+    for (int k = 0; k < u_layer_count; ++k) {
+        float dk = texelFetch(u_layer_depths, ivec3(s, k), 0).r;
+        if (dk >= 1.0) break;
+        float zk = u_receiver_near + dk * u_receiver_range;
+        if (texelFetch(u_layer_ids, ivec3(s, k), 0).r == object &&
+            zk - z > u_depth_bias * zk + 2.0 * max(u_occ_texel.x, u_occ_texel.y) * z)
+            apart = 1;
+    }
+    return apart;
+}
 
 void main() {
     Patch p = u_patches[gl_InstanceID];
-    ivec2 texel = ivec2(p.texel % uint(u_map_size), p.texel / uint(u_map_size));
+    uint index = p.texel & ((1u << SSM_LEVEL_SHIFT) - 1u);
+    ivec2 texel = ivec2(index % uint(u_map_size), index / uint(u_map_size));
+    float width = float(1u << (p.texel >> SSM_LEVEL_SHIFT));  // texels per side
     vec2 lo = u_occ_lo + vec2(texel) * u_occ_texel;
-    vec4 rect = vec4(lo, lo + u_occ_texel);  // window rectangle at distance 1
-    float z = p.z;
+    vec4 rect = vec4(lo, lo + width * u_occ_texel);  // window rectangle at distance 1
+    float z = p.z_near;  // the extent of a merged patch's nearest micro-patch
     // Penumbra rectangle on the virtual plane (3.3), in window units: the patch grown by half
     // the light times (1/z_O - 1/z_R).
     vec2 grow = u_light_half * max(1.0 / z - 1.0 / u_receiver_far, 0.0);
@@ -76,8 +132,9 @@ void main() {
     float dmax = -1.0;
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x)
-            dmax = max(dmax, texelFetch(u_receiver_max, ivec3(min(base + ivec2(x, y), last), u_layer),
-                                        level).r);
+            dmax = max(
+                dmax,
+                texelFetch(u_receiver_max, ivec3(min(base + ivec2(x, y), last), u_layer), level).r);
     float zmax = u_receiver_near + dmax * u_receiver_range;
     if (dmax < 0.0 || zmax <= z || px.z <= px.x || px.w <= px.y) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -90,24 +147,14 @@ void main() {
 #endif
     vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
     gl_Position = vec4(mix(ndc.xy, ndc.zw, corner), 0.0, 1.0);
-    v_patch = rect * z;
-    v_depth = z;
+    v_rect = rect;
+    v_depth = p.z;
+    v_depth_near = p.z_near;
+    v_children = int(width);
+    v_texel = texel;
+    v_reach = u_far_side == 1 && u_far_reach > 0.0 ? reach(texel, p.z) : 0.0;
     v_object = texelFetch(u_occ_ids, texel, 0).r;
-    v_separated = 0;
-    if (u_layer_count > 1) {
-        // The patch's centre on the soft shadow map, and the layers there.
-        vec2 centre = 0.5 * (rect.xy + rect.zw);
-        ivec2 s = clamp(ivec2((centre - u_ssm_lo) / u_ssm_size * float(u_ssm_res)), ivec2(0),
-                        ivec2(u_ssm_res - 1));
-        for (int k = 0; k < u_layer_count; ++k) {
-            float dk = texelFetch(u_layer_depths, ivec3(s, k), 0).r;
-            if (dk >= 1.0) break;
-            float zk = u_receiver_near + dk * u_receiver_range;
-            if (texelFetch(u_layer_ids, ivec3(s, k), 0).r == v_object &&
-                zk - z > u_depth_bias * zk + 2.0 * max(u_occ_texel.x, u_occ_texel.y) * z)
-                v_separated = 1;
-        }
-    }
+    v_separated = separated(rect, p.z, v_object);
     if (gl_VertexID == 0) {
         if (u_layer == 0) atomicAdd(u_micro_patches, 1u);
         atomicAdd(u_texels_touched, uint((px.z - px.x) * (px.w - px.y) + 0.5));

@@ -16,8 +16,11 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const u64 sides = p.get(kTwoSided) ? 2 : 1;
     const auto layers = static_cast<u64>(p.get(kLayers));
     MemoryTerms out;
+    // Per occluder texel and side: depth, id, list entry; with `lod` one pyramid (16 bytes,
+    // 4/3 with its levels) and the merged map (16 bytes), shared by the sides.
+    const u64 lod = p.get(kLod) > 0.0 ? 38 : 0;
     out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
-                   saturatingProduct({m, m, 4 + 4 + 8, sides})});
+                   saturatingProduct({m, m, (4 + 4 + sizeof(MicroPatch)) * sides + lod})});
     // Per receiver layer: soft shadow maps (per side), depth and id, the farthest-receiver
     // pyramid (4/3 of a float); plus the peeling's scratch depth and ids.
     out.push_back({"technique.layers",

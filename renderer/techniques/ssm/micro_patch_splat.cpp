@@ -56,12 +56,13 @@ void Ssm::compact(const LightWindow& occ, int side) {
     glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
     const auto& p = compact_program_;
     glUseProgram(p.id());
-    glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, occluder_maps_[size_t(side)]->depth.id());
+    glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, patchSource(side).id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                      gpu_patches_[size_t(side)].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_RUNS, compact_runs_.id());
     gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_merged", lod_ ? 1 : 0);
     gl::setUniform(p, "u_occ_near", occ.near);
     gl::setUniform(p, "u_occ_range", occ.far - occ.near);
     gl::setUniform(p, "u_run", compact_run_);
@@ -93,6 +94,10 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER, receiver_layers_->depth.id());
     if (clip_) glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER_MAX, receiver_max_.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
+    glBindTextureUnit(SSM_UNIT_SPLAT_OCC_DEPTH, occluder_maps_[size_t(side)]->depth.id());
+    gl::setUniform(p, "u_occ_near", occ.near);
+    gl::setUniform(p, "u_occ_range", occ.far - occ.near);
+    gl::setUniform(p, "u_far_side", side);
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());

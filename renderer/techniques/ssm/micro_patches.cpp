@@ -3,21 +3,24 @@
 
 namespace penumbra::techniques::ssm {
 
-void readMicroPatches(const gl::Texture& depth, int map_size, const passes::LightWindow& window,
-                      float empty, std::vector<float>& scratch, std::vector<MicroPatch>& patches) {
+void readMicroPatches(const gl::Texture& source, bool merged, int map_size,
+                      const passes::LightWindow& window, float empty, std::vector<float>& scratch,
+                      std::vector<MicroPatch>& patches) {
     const size_t n = static_cast<size_t>(map_size) * static_cast<size_t>(map_size);
-    scratch.resize(n);
-    glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      static_cast<GLsizei>(n * sizeof(float)), scratch.data());
+    const size_t channels = merged ? 4 : 1;
+    scratch.resize(n * channels);
+    glGetTextureImage(source.id(), 0, merged ? GL_RGBA : GL_DEPTH_COMPONENT, GL_FLOAT,
+                      static_cast<GLsizei>(n * channels * sizeof(float)), scratch.data());
     patches.clear();
-    for (int j = 0; j < map_size; ++j)
-        for (int i = 0; i < map_size; ++i) {
-            const float d = scratch[static_cast<size_t>(j) * static_cast<size_t>(map_size) +
-                                    static_cast<size_t>(i)];
-            if (d == empty) continue;
-            const float z = window.near + d * (window.far - window.near);
-            patches.push_back({static_cast<std::uint32_t>(j * map_size + i), z});
-        }
+    for (size_t t = 0; t < n; ++t) {
+        const float d = scratch[t * channels];
+        if (d == empty) continue;
+        const auto level = merged ? static_cast<std::uint32_t>(scratch[t * channels + 1]) : 0u;
+        const float near = merged ? scratch[t * channels + 2] : d;
+        const float z = window.near + d * (window.far - window.near);
+        const float z_near = window.near + near * (window.far - window.near);
+        patches.push_back({static_cast<std::uint32_t>(t) | (level << kLevelShift), z, z_near});
+    }
 }
 
 }  // namespace penumbra::techniques::ssm

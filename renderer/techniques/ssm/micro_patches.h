@@ -14,14 +14,20 @@ namespace penumbra::techniques::ssm {
 
 // std430 mirror of Patch in glsl/techniques/ssm/splat.vert and compact.comp.
 struct MicroPatch {
-    std::uint32_t texel;  // y * map size + x: the patch is this texel of the map's window
-    float z;              // distance from the light's centre
+    // y * map size + x, plus the level L << kLevelShift: the patch is the 2^L x 2^L texels from
+    // this one (lod.comp merges blocks; 0 without `lod`)
+    std::uint32_t texel;
+    float z;       // distance from the light (a merged patch's: the middle of its depths)
+    float z_near;  // its nearest micro-patch's (z when unmerged)
 };
-static_assert(sizeof(MicroPatch) == 8);
+static_assert(sizeof(MicroPatch) == 12);
+inline constexpr int kLevelShift = 24;  // maps up to 4096^2 = 2^24 texels
 
-// Reads the MAP_SIZE^2 linear-depth occluder map DEPTH (window WINDOW) back and appends one
-// micro-patch per texel that is not EMPTY (the cleared depth) to PATCHES (cleared first).
-void readMicroPatches(const gl::Texture& depth, int map_size, const passes::LightWindow& window,
-                      float empty, std::vector<float>& scratch, std::vector<MicroPatch>& patches);
+// Reads the MAP_SIZE^2 occluder map SOURCE (window WINDOW) back and appends one micro-patch per
+// texel that is not EMPTY (the cleared depth) to PATCHES (cleared first). SOURCE is the linear
+// depth map, or with MERGED lod.comp's map of (depth, level, nearest depth, 0).
+void readMicroPatches(const gl::Texture& source, bool merged, int map_size,
+                      const passes::LightWindow& window, float empty, std::vector<float>& scratch,
+                      std::vector<MicroPatch>& patches);
 
 }  // namespace penumbra::techniques::ssm

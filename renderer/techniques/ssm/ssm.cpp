@@ -96,6 +96,7 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         glTextureParameteri(receiver_max_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+    prepareLod();
     planes_program_ =
         gl::buildProgram("ssm receiver planes", {"techniques/ssm/receiver_planes.comp"});
     receiver_planes_ =
@@ -135,11 +136,14 @@ void Ssm::render(frame::FrameContext& ctx) {
         const std::uint32_t zero[2] = {0, 0};
         glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero);
         for (int side = 0; side < sides; ++side) {
+            if (lod_)
+                ctx.pass(side ? "ssm_lod[back]" : "ssm_lod",
+                         [&] { buildLod(light, occ, soft, side); });
             if (!cpu_path_)
                 ctx.pass(side ? "ssm_compact[back]" : "ssm_compact", [&] { compact(occ, side); });
             if (cpu_path_)
                 ctx.pass(side ? "ssm_readback[back]" : "ssm_readback", [&] {
-                    ssm::readMicroPatches(occluder_maps_[size_t(side)]->depth, map_size_, occ,
+                    ssm::readMicroPatches(patchSource(side), lod_, map_size_, occ,
                                           side ? 0.0f : 1.0f, scratch_, patches_);
                     patches_buffer_.upload(std::span<const ssm::MicroPatch>(patches_),
                                            GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,

@@ -32,6 +32,9 @@ inline constexpr IntKey kSsmSize{"ssm_size"};
 inline constexpr BoolKey kTwoSided{"two_sided"};
 inline constexpr BoolKey kClip{"clip"};
 inline constexpr IntKey kLayers{"layers"};
+inline constexpr FloatKey kLod{"lod"};
+inline constexpr FloatKey kLodDepth{"lod_depth"};
+inline constexpr FloatKey kFarReach{"far_reach"};
 
 inline constexpr std::array kSsmParams = {
     intParam(kMapSize, 256, 16, 4096, "occluder map width and height in texels")
@@ -42,7 +45,7 @@ inline constexpr std::array kSsmParams = {
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
-    boolParam(kTwoSided, false,
+    boolParam(kTwoSided, true,
               "also splat the farthest (back) occluder surfaces into a second map, merged by max")
         .define(),
     enumParam(kPath, PatchPath::Gpu,
@@ -53,11 +56,27 @@ inline constexpr std::array kSsmParams = {
     floatParam(kDepthBias, 0.002, 0.0, 0.5,
                "a micro-patch shadows a receiver only when nearer by this fraction of its depth")
         .uniform(),
+    floatParam(kFarReach, 0.0, 0.0, 64.0,
+               "two_sided: a far-side patch spares the receivers within this many times its "
+               "largest depth step to a neighbour (a steep wall's foot); 0: off")
+        .uniform(),
     intParam(kLayers, 4, 1, 8,
              "receiver layers peeled from the light's centre, one soft shadow map each; 1 is "
              "the paper: objects of role both occlude only and the receivers are the "
              "role-receiver objects"),
+    floatParam(kLod, 4.0, 0.0, 64.0,
+               "merge 2x2 micro-patches of one object (level by level) where the penumbra quad "
+               "grows on each side by at least this many merged patch widths; 0: off")
+        .uniform(),
+    floatParam(kLodDepth, 0.005, 0.0, 1.0,
+               "merged micro-patches' depths span at most this fraction of their distance from "
+               "the light")
+        .uniform(),
 };
+
+// `lod` merges blocks of at most 2^kMaxLodLevel micro-patches a side: splat.frag counts a
+// block's micro-patches one by one for receivers near it in depth.
+inline constexpr int kMaxLodLevel = 3;
 
 // ssm splats each of its map_size^2 micro-patches over up to ssm_size^2 texels: refused when
 // map_size x ssm_size exceeds this (the default 256 x 256 is 2^16).
@@ -84,7 +103,8 @@ public:
           cpu_path_(p.getEnum(kPath) == PatchPath::Cpu),
           clip_(p.get(kClip)),
           depth_bias_(static_cast<float>(p.get(kDepthBias))),
-          layers_(p.get(kLayers)) {}
+          layers_(p.get(kLayers)),
+          lod_(p.get(kLod) > 0.0) {}
 
     // The receivers: with one layer (the paper) the role-receiver objects only.
     bool receives(scene::ShadowRole role) const {
@@ -117,6 +137,16 @@ private:
     // test of a micro-patch over its own object's surface.
     void buildReceiverPlanes(const LightWindow& soft);
 
+    // lod.comp's program and textures when `lod` is on (lod.cpp).
+    void prepareLod();
+    // The micro-patch level of detail of side SIDE (lod.comp): merged blocks into lod_patches_.
+    void buildLod(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
+                  int side);
+    // The map side SIDE's micro-patches are listed from: lod_patches_ with `lod`, else its depth.
+    const gl::Texture& patchSource(int side) const {
+        return lod_ ? lod_patches_ : occluder_maps_[size_t(side)]->depth;
+    }
+
     // Lists side SIDE's non-empty occluder texels as its micro-patches on the GPU, in row-major
     // order (deterministic, as the CPU path's), and makes their count the splat's instance
     // count (no readback).
@@ -135,6 +165,7 @@ private:
     bool fp16_, two_sided_, cpu_path_, clip_;
     float depth_bias_;  // also the peeling's gap (host)
     int layers_;
+    bool lod_;
     int used_layers_ = 0;  // receiver layers holding a receiver this frame
     std::unique_ptr<passes::LightDepthPass> depth_pass_, peel_pass_;
     gl::Program splat_program_, visibility_program_, max_program_, compact_program_,
@@ -146,6 +177,11 @@ private:
     std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
     std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
     gl::Texture receives_;
+    gl::Program lod_program_;
+    gl::Texture lod_pyramid_;  // RGBA32F mips: per block nearest, farthest depth, id, mergeable
+    gl::Texture lod_patches_;  // RGBA32F: per merged block at its first texel middle depth, level,
+                               // nearest depth
+    int lod_levels_ = 1;
     gl::Buffer counters_;
     gl::Buffer command_;       // path=gpu: the splat's indirect draw
     gl::Buffer compact_runs_;  // path=gpu: each run's patch count, then first slot

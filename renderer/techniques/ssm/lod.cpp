@@ -1,0 +1,59 @@
+// `ssm`'s micro-patch level of detail (lod.comp): neighbouring micro-patches of similar depth
+// merged into one where their penumbra quads dwarf them, so the splat's work stays bounded.
+#include "glsl/techniques/ssm/bindings.glsl"
+#include "renderer/gl/param_uniforms.h"
+#include "renderer/techniques/ssm/ssm.h"
+
+#include <algorithm>
+
+namespace penumbra::techniques::ssm {
+
+void Ssm::prepareLod() {
+    if (!lod_) return;
+    lod_program_ = gl::buildProgram("ssm lod", {"techniques/ssm/lod.comp"});
+    lod_levels_ = 1;  // the pyramid's: up to kMaxLodLevel
+    while (lod_levels_ <= kMaxLodLevel && (map_size_ >> lod_levels_) > 0) ++lod_levels_;
+    lod_pyramid_ = gl::createTexture(GL_TEXTURE_2D, "ssm lod pyramid");
+    glTextureStorage2D(lod_pyramid_.id(), lod_levels_, GL_RGBA32F, map_size_, map_size_);
+    glTextureParameteri(lod_pyramid_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTextureParameteri(lod_pyramid_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    lod_patches_ = gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "ssm lod micro-patches");
+}
+
+// The pyramid level by level (phases 0 and 1), then the merged map (phase 2).
+void Ssm::buildLod(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
+                   int side) {
+    const auto& p = lod_program_;
+    glUseProgram(p.id());
+    const auto& map = *occluder_maps_[size_t(side)];
+    glBindTextureUnit(SSM_UNIT_LOD_DEPTH, map.depth.id());
+    glBindTextureUnit(SSM_UNIT_LOD_IDS, map.ids.id());
+    glBindTextureUnit(SSM_UNIT_LOD_PYRAMID, lod_pyramid_.id());
+    gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_occ_near", occ.near);
+    gl::setUniform(p, "u_occ_range", occ.far - occ.near);
+    gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
+    gl::setUniform(p, "u_light_half", 0.5f * light.size);
+    gl::setUniform(p, "u_receiver_far", soft.far);
+    gl::setParamUniforms(p, kSsmParams, params_);  // lod, lod_depth
+    const auto dispatch = [](int size) {
+        const auto groups = static_cast<GLuint>((std::max(size, 1) + 7) / 8);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    };
+    for (int level = 0; level < lod_levels_; ++level) {
+        gl::setUniform(p, "u_phase", level == 0 ? 0 : 1);
+        gl::setUniform(p, "u_level", level);
+        glBindImageTexture(SSM_IMAGE_LOD_LEVEL, lod_pyramid_.id(), level, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_RGBA32F);
+        dispatch(map_size_ >> level);
+    }
+    gl::setUniform(p, "u_phase", 2);
+    gl::setUniform(p, "u_level", lod_levels_ - 1);
+    glBindImageTexture(SSM_IMAGE_LOD_PATCHES, lod_patches_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    dispatch(map_size_);
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::techniques::ssm
