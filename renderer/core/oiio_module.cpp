@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/version.h"
+#include "penumbra/oiio_interface.h"
 #include "renderer/core/error.h"
 
 #ifndef PENUMBRA_INSTALL_LIBDIR
@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kModuleFile = "libpenumbra_oiio.so";
 constexpr const char* kEntry = "penumbra_oiio_module";
-using Entry = OiioModule* (*)(int interface, const char* commit);
+using Entry = OiioModule* (*)(const char* interface);
 
 // Where the module may lie: beside the executable (the build tree), then in the installed
 // library folder (<prefix>/bin/penumbra -> <prefix>/<libdir>/penumbra/).
@@ -37,10 +37,11 @@ std::vector<fs::path> candidates() {
 }
 
 OiioModule* fromEntry(void* symbol, const std::string& where) {
-    OiioModule* module = reinterpret_cast<Entry>(symbol)(kOiioModuleInterface, PENUMBRA_COMMIT);
+    OiioModule* module = reinterpret_cast<Entry>(symbol)(PENUMBRA_OIIO_INTERFACE);
     if (!module)
         throw RuntimeError("cannot load the OpenImageIO module " + where +
-                           ": built from other sources than this binary (rebuild or reinstall)");
+                           ": built from another revision of its interface than this binary "
+                           "(rebuild or reinstall)");
     return module;
 }
 

@@ -8,11 +8,9 @@
 
 namespace penumbra {
 
-// The interface's revision: the module is refused unless it was built with the same one and
-// from the same commit as the binary (a stale module beside a new binary is an error, not a
-// crash). Raise it with any change to the classes below.
-inline constexpr int kOiioModuleInterface = 1;
-
+// The module is refused unless it was built from this header as the binary was (CMake keys both
+// on a hash of this file, penumbra/oiio_interface.h): a stale module beside a new binary is an
+// error, not a crash; a module from another commit with the same interface loads.
 // A decoded image's first subimage: its size, origin and tiles (0 when scanline).
 struct DecoderSpec {
     int width = 0, height = 0, depth = 0, channels = 0;

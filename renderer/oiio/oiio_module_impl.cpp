@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "penumbra/version.h"
+#include "penumbra/oiio_interface.h"
 #include "renderer/core/oiio_module.h"
 
 namespace penumbra {
@@ -118,13 +118,11 @@ public:
 }  // namespace
 }  // namespace penumbra
 
-// The entry the loader looks up: the module, or null when the caller was built from other
-// sources (another interface revision or commit).
+// The entry the loader looks up: the module, or null when the caller was built from another
+// revision of core/oiio_module.h (its hash, penumbra/oiio_interface.h).
 extern "C" __attribute__((visibility("default"))) penumbra::OiioModule* penumbra_oiio_module(
-    int interface, const char* commit) {
-    if (interface != penumbra::kOiioModuleInterface || !commit ||
-        std::strcmp(commit, PENUMBRA_COMMIT) != 0)
-        return nullptr;
+    const char* interface) {
+    if (!interface || std::strcmp(interface, PENUMBRA_OIIO_INTERFACE) != 0) return nullptr;
     static penumbra::Module module;
     return &module;
 }
