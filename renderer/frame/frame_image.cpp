@@ -17,7 +17,7 @@ void FrameReadback::wait() {
 
 FrameReadback startFrameReadback(passes::ReadbackPool& pool, const passes::GBuffer& gbuffer,
                                  const passes::Shade& shade, const OutputTargets& targets,
-                                 int lights, const std::string& technique_name,
+                                 int lights, int scene_lights, const std::string& technique_name,
                                  const std::vector<DiagnosticChannel>& diagnostics) {
     const int w = gbuffer.width(), h = gbuffer.height();
     FrameReadback r;
@@ -35,9 +35,11 @@ FrameReadback startFrameReadback(passes::ReadbackPool& pool, const passes::GBuff
     r.normal = rgba(gbuffer.normal());
     r.id = pool.read(gbuffer.id(), w, h, GL_RED_INTEGER, GL_INT, 4);
     r.visibility = red(shade.visibility(), -1);
-    // With several lights, each light's own visibility (its layer's .r: the fraction of that
-    // light's area the point sees) beside the irradiance-weighted `visibility`.
-    for (int l = 0; lights > 1 && l < lights; ++l)
+    // With several scene lights, each one's own visibility (its layer's .r: the fraction of that
+    // light's area the point sees) beside the irradiance-weighted `visibility`. Not for the
+    // lights made of an environment: hundreds of them (`reference`'s env_samples) would be
+    // hundreds of channels.
+    for (int l = 0; scene_lights > 1 && l < std::min(scene_lights, lights); ++l)
         r.light_visibility.push_back(red(targets.visibility(), l));
     for (size_t d = 0; d < diagnostics.size(); ++d) {
         r.diagnostic.emplace_back();

@@ -26,17 +26,19 @@ struct FrameReadback {
     std::string technique_name;
     std::vector<DiagnosticChannel> diagnostics;
     Read beauty, position, normal, id, visibility;
-    std::vector<Read> light_visibility;         // with several lights: each light's layer
+    std::vector<Read> light_visibility;         // with several scene lights: each one's layer
     std::vector<std::vector<Read>> diagnostic;  // [diagnostic][light]
     passes::ReadbackFence fence;
     // Waits until the copies are done (GL thread). Throws RuntimeError.
     void wait();
 };
 
-// Queues the copies of the frame's textures into POOL's buffers (GL thread).
+// Queues the copies of the frame's textures into POOL's buffers (GL thread). LIGHTS: the
+// layers of TARGETS; the first SCENE_LIGHTS are the scene's `lights` (the rest, the lights a
+// technique makes of the environment, get no channel of their own).
 FrameReadback startFrameReadback(passes::ReadbackPool& pool, const passes::GBuffer& gbuffer,
                                  const passes::Shade& shade, const OutputTargets& targets,
-                                 int lights, const std::string& technique_name,
+                                 int lights, int scene_lights, const std::string& technique_name,
                                  const std::vector<DiagnosticChannel>& diagnostics);
 
 // The image of a waited-for readback (rows top first), on any thread; no attributes.

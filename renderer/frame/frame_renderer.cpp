@@ -78,6 +78,7 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
 
 FrameReadback FrameRenderer::startReadback() {
     FrameReadback r = startFrameReadback(*readback_, gbuffer_, shade_, *targets_, lights_,
+                                         static_cast<int>(first_.lights.size()),
                                          std::string(info_.name), diagnostics_);
     gl::checkErrors("readback");
     return r;

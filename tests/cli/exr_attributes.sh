@@ -99,4 +99,18 @@ for line in open(sys.argv[2]):
     shadowed += min(v[a], v[b]) < 0.5
 assert shadowed > 0, "no pixel is shadowed from either light"
 PY
+# The lights a technique makes of an environment get no channel of their own (`reference`'s
+# env_samples would be hundreds): the two scene lights keep theirs.
+python3 - "$PENUMBRA_SOURCE_DIR/tests/data/gl" <<'PY' >two_env.json
+import json, os, sys
+scene = json.load(open(os.path.join(sys.argv[1], "two_lights.json")))
+scene["environment"] = {"image": os.path.join(sys.argv[1], "sky_sun.exr"), "intensity": 1.0}
+print(json.dumps(scene))
+PY
+"$PENUMBRA" render two_env.json -t reference --size 32x24 -o two_env.exr --quiet \
+    -D technique.samples=2 -D technique.env_samples=16
+names=$(oiiotool --info:format=xml -v two_env.exr | grep -o '<channelname>visibility[^<]*' |
+    sed 's/<channelname>//' | tr '\n' ' ')
+[ "$names" = "visibility visibility.0 visibility.1 " ] ||
+    fail "per-light channels with an environment: $names"
 echo "exr_attributes ok"
