@@ -54,7 +54,8 @@ struct ReceiverLayers::KBuffer {
                              GL_DYNAMIC_STORAGE_BIT);
     }
 
-    // Clears the slots and inserts every light-facing fragment (no depth test).
+    // Clears the slots and inserts every light-facing fragment (no depth test). The last
+    // resolve that read the slots has finished: its counts were read back.
     void insert(const passes::GpuScene& scene, passes::GpuScene::Filter filter,
                 const scene::RectLight& light, const passes::LightDepthView& view,
                 const ReceiverLayers& r) const {
