@@ -4,7 +4,14 @@
 #ifndef PENUMBRA_SSM_BINDINGS_GLSL
 #define PENUMBRA_SSM_BINDINGS_GLSL
 
-// peel.frag (receiver layers) and peel_resolve.frag
+// kbuffer_insert.frag and kbuffer_resolve.frag (receiver layers in one pass): a slot holds
+// (depth quantised to SSM_KBUFFER_DEPTH_STEPS) << SSM_KBUFFER_ID_BITS | object id, so object ids
+// up to SSM_KBUFFER_MAX_OBJECTS - 1 fit beside 0xffffffff, an empty nearest slot
+#define SSM_IMAGE_KBUFFER 0
+#define SSM_KBUFFER_ID_BITS 12
+#define SSM_KBUFFER_DEPTH_STEPS 1048575  // 2^20 - 1: depth 1 is the largest value
+#define SSM_KBUFFER_MAX_OBJECTS 4095
+// peel.frag (receiver layers, the fallback) and peel_resolve.frag
 #define SSM_UNIT_PEEL_PREVIOUS 5  // the layers peeled so far
 #define SSM_UNIT_RESOLVE_DEPTH 0
 #define SSM_UNIT_RESOLVE_IDS 1
@@ -41,9 +48,10 @@
 // A micro-patch's texel index holds its lod level from this bit (micro_patches.h kLevelShift)
 #define SSM_LEVEL_SHIFT 24
 // Buffers
-#define SSM_BINDING_COUNTERS 3  // splat.vert's Counters
-#define SSM_BINDING_PATCHES 4   // splat.vert's and compact.comp's Patches
-#define SSM_BINDING_COMMAND 5   // compact.comp's Command (path gpu)
-#define SSM_BINDING_RUNS 6      // compact.comp's Runs (path gpu)
+#define SSM_BINDING_COUNTERS 3      // splat.vert's Counters
+#define SSM_BINDING_PATCHES 4       // splat.vert's and compact.comp's Patches
+#define SSM_BINDING_COMMAND 5       // compact.comp's Command (path gpu)
+#define SSM_BINDING_RUNS 6          // compact.comp's Runs (path gpu)
+#define SSM_BINDING_LAYER_COUNTS 7  // kbuffer_resolve.frag's LayerCounts
 
 #endif

@@ -47,8 +47,6 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     prepareReceivers(scene);
     depth_pass_ = std::make_unique<passes::LightDepthPass>(
         "ssm depth", passes::LightDepthPass::Output::DepthAndIds);
-    peel_pass_ =
-        std::make_unique<passes::LightDepthPass>("ssm receiver layers", "techniques/ssm/peel.frag");
     splat_program_ =
         gl::buildProgram("ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
                          {{"CLIP", clip_ ? "1" : "0"}});
@@ -84,8 +82,9 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
             ssm_size_, layers_, format,
             side ? "ssm soft shadow maps (back)" : "ssm soft shadow maps"));
     }
-    receiver_layers_ =
-        std::make_unique<ssm::ReceiverLayers>(ssm_size_, layers_, "ssm receiver layers");
+    receiver_layers_ = std::make_unique<ssm::ReceiverLayers>(
+        ssm_size_, layers_, ssm::ReceiverLayers::buildFor(scene.objects().size()),
+        "ssm receiver layers");
     if (clip_) {
         max_program_ = gl::buildProgram("ssm receiver max", {"techniques/ssm/receiver_max.comp"});
         receiver_levels_ = 1;
@@ -128,8 +127,10 @@ void Ssm::render(frame::FrameContext& ctx) {
         ctx.pass("ssm_receiver_map", [&] {
             // Layers at least depth_bias of the farthest receiver's depth apart.
             const float gap = depth_bias_ * soft.far / (soft.far - soft.near);
-            used_layers_ = receiver_layers_->render(ctx.gpu, *peel_pass_, receiverFilter(), light,
-                                                    depthView(light, soft), gap);
+            const auto built = receiver_layers_->render(ctx.gpu, receiverFilter(), light,
+                                                        depthView(light, soft), gap);
+            used_layers_ = built.used;
+            receiver_passes_ = built.passes;
             if (clip_) buildReceiverMax();
             if (layers_ > 1) buildReceiverPlanes(soft);
         });
@@ -164,6 +165,8 @@ void Ssm::render(frame::FrameContext& ctx) {
     ctx.stats["fill_per_micro_patch"] = patches > 0 ? touched / patches : 0.0;
     ctx.stats["receiver_layers"] =
         std::max(ctx.stats.value("receiver_layers", 0), shadowed ? used_layers_ : 0);
+    ctx.stats["receiver_passes"] =
+        ctx.stats.value("receiver_passes", 0) + (shadowed ? receiver_passes_ : 0);
 }
 
 }  // namespace ssm

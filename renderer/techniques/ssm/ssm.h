@@ -16,6 +16,7 @@
 #include "renderer/passes/light_windows.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/ssm/micro_patches.h"
+#include "renderer/techniques/ssm/receiver_layers.h"
 #include "renderer/techniques/ssm/targets.h"
 #include "renderer/techniques/technique.h"
 
@@ -166,8 +167,9 @@ private:
     float depth_bias_;  // also the peeling's gap (host)
     int layers_;
     bool lod_;
-    int used_layers_ = 0;  // receiver layers holding a receiver this frame
-    std::unique_ptr<passes::LightDepthPass> depth_pass_, peel_pass_;
+    int used_layers_ = 0;      // receiver layers holding a receiver (this light)
+    int receiver_passes_ = 0;  // geometry passes that built them
+    std::unique_ptr<passes::LightDepthPass> depth_pass_;
     gl::Program splat_program_, visibility_program_, max_program_, compact_program_,
         planes_program_;
     gl::Texture receiver_max_;
