@@ -34,7 +34,6 @@
 #define SSM_UNIT_SPLAT_RECEIVER 1
 #define SSM_UNIT_SPLAT_RECEIVER_MAX 2
 #define SSM_UNIT_SPLAT_OCC_IDS 6
-#define SSM_UNIT_SPLAT_LAYER_DEPTHS 7
 #define SSM_UNIT_SPLAT_LAYER_IDS 8
 #define SSM_UNIT_SPLAT_PLANES 9
 #define SSM_UNIT_SPLAT_OCC_DEPTH 10  // the side's linear occluder depth (merged patches)

@@ -35,10 +35,8 @@ layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_
 uniform float u_receiver_near;
 uniform float u_receiver_range;
 
-// Self-shadowing (several receiver layers): the object of each occluder texel, and the receiver
-// layers' depths and objects. A patch shadows receivers of its own object only where that
-// object has another light-facing surface beyond it at the patch's place (an ear over a
-// head), never the surface it lies on (a convex object hides only what its horizon does).
+// Self-shadowing (several receiver layers): the object of each occluder texel; splat.frag lets a
+// patch shadow its own object only above that surface's tangent plane.
 layout(binding = SSM_UNIT_SPLAT_OCC_IDS) uniform isampler2D u_occ_ids;
 // The side's linear occluder depth, for the far side's slope (u_far_side)
 layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;
@@ -46,12 +44,7 @@ uniform int u_far_side;  // 1: the farthest-surface map of two_sided (empty texe
 uniform float u_occ_near;
 uniform float u_occ_range;
 flat out float v_reach;  // far side: the depth its texel's surface spans beyond the patch
-layout(binding = SSM_UNIT_SPLAT_LAYER_DEPTHS) uniform sampler2DArray u_layer_depths;
-layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
-uniform int u_layer_count;
-uniform float u_depth_bias;
-flat out int v_object;     // the patch's object
-flat out int v_separated;  // 1: it lies apart from its object's next surface beyond it
+flat out int v_object;   // the patch's object
 
 layout(std430, binding = SSM_BINDING_COUNTERS) buffer Counters {
     uint u_micro_patches;
@@ -85,26 +78,6 @@ float reach(ivec2 texel, float z) {
         if (d != 0.0) most = max(most, abs(u_occ_near + d * u_occ_range - z));
     }
     return u_far_reach * most;
-}
-
-// 1 when the patch RECT (window units) at distance Z lies apart from OBJECT's next
-// light-facing surface beyond it, at the patch's centre on the soft shadow map (an ear over a
-// head); 0 with one receiver layer.
-int separated(vec4 rect, float z, int object) {
-    if (u_layer_count <= 1) return 0;
-    vec2 centre = 0.5 * (rect.xy + rect.zw);
-    ivec2 s = clamp(ivec2((centre - u_ssm_lo) / u_ssm_size * float(u_ssm_res)), ivec2(0),
-                    ivec2(u_ssm_res - 1));
-    int apart = 0;
-    for (int k = 0; k < u_layer_count; ++k) {
-        float dk = texelFetch(u_layer_depths, ivec3(s, k), 0).r;
-        if (dk >= 1.0) break;
-        float zk = u_receiver_near + dk * u_receiver_range;
-        if (texelFetch(u_layer_ids, ivec3(s, k), 0).r == object &&
-            zk - z > u_depth_bias * zk + 2.0 * max(u_occ_texel.x, u_occ_texel.y) * z)
-            apart = 1;
-    }
-    return apart;
 }
 
 void main() {
@@ -154,7 +127,6 @@ void main() {
     v_texel = texel;
     v_reach = u_far_side == 1 && u_far_reach > 0.0 ? reach(texel, p.z) : 0.0;
     v_object = texelFetch(u_occ_ids, texel, 0).r;
-    v_separated = separated(rect, p.z, v_object);
     if (gl_VertexID == 0) {
         if (u_layer == 0) atomicAdd(u_micro_patches, 1u);
         atomicAdd(u_texels_touched, uint((px.z - px.x) * (px.w - px.y) + 0.5));

@@ -98,7 +98,6 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     gl::setUniform(p, "u_occ_near", occ.near);
     gl::setUniform(p, "u_occ_range", occ.far - occ.near);
     gl::setUniform(p, "u_far_side", side);
-    glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_DEPTHS, receiver_layers_->depth.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());
     gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
