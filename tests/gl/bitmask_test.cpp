@@ -1,7 +1,7 @@
 // `bitmask` (Schwarz & Stamminger) on small scenes: accuracy against `exact` (kGroundTruth) on
 // the default scene and a lone sphere under a wide light, classification without back-projection,
-// budgets and their statistics, budget maps (procedural and from an image), the acceleration
-// structures and the area-accumulation alternative.
+// budgets and their statistics (back-projection stops at a full mask), budget maps (procedural
+// and from an image), the acceleration structures and the area-accumulation alternative.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -208,6 +208,34 @@ TEST(BitmaskGL, BitmaskAvoidsTheOverOcclusionOfAreaSums) {
     for (float v : channel(bits.image, "visibility")) sum_bits += v;
     for (float v : channel(area.image, "visibility")) sum_area += v;
     EXPECT_LT(sum_area, sum_bits);
+}
+
+TEST(BitmaskGL, FullMasksStopBackprojection) {
+    // Once every light sample is occluded nothing can change the visibility: the rows left are
+    // skipped. Area sums have no such test, so they count every micro-occluder of the area.
+    auto bits = run("adaptive_default.json", bitmask(R"(, "budget": 0)"));
+    auto area = run("adaptive_default.json", bitmask(R"(, "budget": 0, "visibility": "area")"));
+    const auto& vb = channel(bits.image, "visibility");
+    const auto& ob = channel(bits.image, "bitmask.occluders");
+    const auto& oa = channel(area.image, "bitmask.occluders");
+    long stopped = 0, full = 0;
+    for (size_t i = 0; i < vb.size(); ++i) {
+        if (vb[i] > 0.0f) {
+            EXPECT_EQ(ob[i], oa[i]) << "pixel " << i;  // not full: every row back-projected
+        } else if (oa[i] > 0.0f) {
+            ++full;
+            EXPECT_LE(ob[i], oa[i]) << "pixel " << i;
+            if (ob[i] < oa[i]) ++stopped;
+        }
+    }
+    std::printf(
+        "unlimited: %ld of %ld fully occluded pixels stopped early; %.1f against %.1f "
+        "micro-occluders per pixel\n",
+        stopped, full, bits.stats.value("micro_occluders_mean", 0.0),
+        area.stats.value("micro_occluders_mean", 0.0));
+    EXPECT_GT(stopped, full / 2);
+    EXPECT_LT(bits.stats.value("micro_occluders_mean", 0.0),
+              area.stats.value("micro_occluders_mean", 0.0));
 }
 
 TEST(BitmaskGL, BudgetFalloffMap) {

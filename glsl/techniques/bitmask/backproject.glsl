@@ -1,9 +1,9 @@
 // `bitmask` back-projection (Schwarz & Stamminger, Bitmask Soft Shadows): every micropatch of
 // an HSM level inside a search area that lies in front of the receiver is projected from the
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
-// (BITMASK 1, four half-plane table lookups) or adds its area (BITMASK 0). GAP_FILL 1 extends
-// a micro-occluder towards a farther neighbour of its level so their projections leave no gap.
-// MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
+// (BITMASK 1, four half-plane table lookups in a buffer) or adds its area (BITMASK 0). GAP_FILL 1
+// extends a micro-occluder towards a farther neighbour of its level so their projections leave no
+// gap. MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
 // the extent and depth come from their own mip chains (section 5.2), with the same extension.
 // On a receiver that also casts, the light's part below its tangent plane counts as hidden
 // (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
@@ -15,8 +15,10 @@ layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_e
 layout(binding = BITMASK_UNIT_VISIBILITY_RECT_DEPTH) uniform sampler2D u_rect_depth;
 #endif
 #if BITMASK
-// Rows 0-1: x >= u words, rows 2-3: y >= v
-layout(binding = BITMASK_UNIT_VISIBILITY_MASKS) uniform usampler2D u_masks;
+// Mask i of x >= u at 2 i (words 0-3), 2 i + 1 (words 4-7); y >= v after them
+layout(std430, binding = BITMASK_BINDING_VISIBILITY_MASKS) readonly buffer Masks {
+    uvec4 b_masks[];
+};
 // Sample k at texel (k, 0): (u, v)
 layout(binding = BITMASK_UNIT_VISIBILITY_SAMPLES) uniform sampler2D u_samples;
 uniform int u_mask_resolution;
@@ -27,7 +29,9 @@ uniform float u_sample_count;
 
 // The light-plane coordinate of the ray from receiver coordinate P (depth PZ) through window
 // coordinate W at distance Z: z (w pz - p) / (pz - z).
-float onLight(float w, float p, float pz, float z) { return z * (w * pz - p) / (pz - z); }
+float onLight(float w, float p, float pz, float z) {
+    return z * (w * pz - p) / (pz - z);
+}
 
 #if BITMASK
 // Visibility from an occlusion bitmask of u_sample_count bits in two halves.
@@ -71,13 +75,13 @@ float litVisibility(vec3 horizon) {
 #include "techniques/bitmask/microquads.glsl"
 #endif
 
-// The distance of micro-occluder (X, Y) of LEVEL: its microrect's or its micropatch's.
+// The distance of micro-occluder (X, Y) of LEVEL: its microrect's or its micropatch's (level 0
+// has no microrect texels: there they are the micropatches, the HSM's level 0).
 float occluderDepth(ivec2 xy, int level) {
 #if MICRORECTS
-    return texelFetch(u_rect_depth, xy, level).r;
-#else
-    return texelFetch(u_hsm, xy, level).r;
+    if (level > 0) return texelFetch(u_rect_depth, xy, level).r;
 #endif
+    return texelFetch(u_hsm, xy, level).r;
 }
 
 #if BITMASK
@@ -86,8 +90,29 @@ int maskIndex(float u) {
 }
 #endif
 
+// The window rectangle (lo, hi) of micro-occluder (X, Y) of LEVEL, whose texel is T wide.
+vec4 occluderWindow(int x, int y, int level, vec2 t) {
+#if MICRORECTS
+    if (level > 0) {
+        vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
+        return vec4(u_win_lo + e.xy * u_texel, u_win_lo + (e.zw + 1.0) * u_texel);
+    }
+#endif
+    vec2 w0 = u_win_lo + vec2(x, y) * t;
+    return vec4(w0, w0 + t);
+}
+
+#if BITMASK
+// Whether every light sample of M0, M1 is occluded: nothing more can change the visibility.
+bool maskFull(uvec4 m0, uvec4 m1) {
+    return maskVisibility(m0, m1) <= 0.0;
+}
+#endif
+
 // Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
-// plane HORIZON); returns visibility, COUNT = micro-occluders back-projected.
+// plane HORIZON); returns visibility, COUNT = micro-occluders back-projected. A row's depths
+// slide along it (each texel read once; GAP_FILL reads its left and right neighbours from
+// there), and with a bitmask the rows stop once every light sample is occluded.
 float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
 #if MICROQUADS
     return backprojectQuads(p, horizon, pz, area, level, count);
@@ -102,42 +127,45 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
 #else
     float occluded = 0.0;
 #endif
-    for (int y = r.y; y <= r.w; ++y)
+    for (int y = r.y; y <= r.w; ++y) {
+        float zl = r.x > 0 ? occluderDepth(ivec2(r.x - 1, y), level) : pz;
+        float zo = occluderDepth(ivec2(r.x, y), level);
         for (int x = r.x; x <= r.z; ++x) {
-            float zo = occluderDepth(ivec2(x, y), level);
-            if (zo >= pz) continue;
-            ++count;
-#if MICRORECTS
-            vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
-            vec2 w0 = u_win_lo + e.xy * u_texel, w1 = u_win_lo + (e.zw + 1.0) * u_texel;
-#else
-            vec2 w0 = u_win_lo + vec2(x, y) * t, w1 = w0 + t;
-#endif
-            vec2 l0 = vec2(onLight(w0.x, p.x, p.z, zo), onLight(w0.y, p.y, p.z, zo));
-            vec2 l1 = vec2(onLight(w1.x, p.x, p.z, zo), onLight(w1.y, p.y, p.z, zo));
-#if GAP_FILL
-            float zl = x > 0 ? occluderDepth(ivec2(x - 1, y), level) : pz;
             float zr = x < n - 1 ? occluderDepth(ivec2(x + 1, y), level) : pz;
-            float zd = y > 0 ? occluderDepth(ivec2(x, y - 1), level) : pz;
-            float zu = y < n - 1 ? occluderDepth(ivec2(x, y + 1), level) : pz;
-            if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w0.x, p.x, p.z, zl));
-            if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w1.x, p.x, p.z, zr));
-            if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w0.y, p.y, p.z, zd));
-            if (zu > zo && zu < pz) l1.y = max(l1.y, onLight(w1.y, p.y, p.z, zu));
+            if (zo < pz) {
+                ++count;
+                vec4 w = occluderWindow(x, y, level, t);
+                vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
+                vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
+#if GAP_FILL
+                float zd = y > 0 ? occluderDepth(ivec2(x, y - 1), level) : pz;
+                float zu = y < n - 1 ? occluderDepth(ivec2(x, y + 1), level) : pz;
+                if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
+                if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
+                if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
+                if (zu > zo && zu < pz) l1.y = max(l1.y, onLight(w.w, p.y, p.z, zu));
 #endif
-            vec2 uv0 = clamp(l0 * scale + 0.5, 0.0, 1.0), uv1 = clamp(l1 * scale + 0.5, 0.0, 1.0);
-            if (uv0.x >= uv1.x || uv0.y >= uv1.y) continue;
+                vec2 uv0 = clamp(l0 * scale + 0.5, 0.0, 1.0);
+                vec2 uv1 = clamp(l1 * scale + 0.5, 0.0, 1.0);
+                if (uv0.x < uv1.x && uv0.y < uv1.y) {
 #if BITMASK
-            int x0 = maskIndex(uv0.x), x1 = maskIndex(uv1.x);
-            int y0 = maskIndex(uv0.y), y1 = maskIndex(uv1.y);
-            m0 |= texelFetch(u_masks, ivec2(x0, 0), 0) & ~texelFetch(u_masks, ivec2(x1, 0), 0) &
-                  texelFetch(u_masks, ivec2(y0, 2), 0) & ~texelFetch(u_masks, ivec2(y1, 2), 0);
-            m1 |= texelFetch(u_masks, ivec2(x0, 1), 0) & ~texelFetch(u_masks, ivec2(x1, 1), 0) &
-                  texelFetch(u_masks, ivec2(y0, 3), 0) & ~texelFetch(u_masks, ivec2(y1, 3), 0);
+                    int x0 = 2 * maskIndex(uv0.x), x1 = 2 * maskIndex(uv1.x);
+                    int y0 = 2 * (maskIndex(uv0.y) + u_mask_resolution + 1);
+                    int y1 = 2 * (maskIndex(uv1.y) + u_mask_resolution + 1);
+                    m0 |= b_masks[x0] & ~b_masks[x1] & b_masks[y0] & ~b_masks[y1];
+                    m1 |= b_masks[x0 + 1] & ~b_masks[x1 + 1] & b_masks[y0 + 1] & ~b_masks[y1 + 1];
 #else
-            occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
+                    occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
 #endif
+                }
+            }
+            zl = zo;
+            zo = zr;
         }
+#if BITMASK
+        if (maskFull(m0, m1)) break;
+#endif
+    }
 #if BITMASK
     return maskVisibility(m0, m1);
 #else

@@ -14,7 +14,6 @@
 // classify.frag
 #define BITMASK_UNIT_CLASSIFY_BUDGET_MAP 12
 // visibility.frag and backproject.glsl, microquads.glsl
-#define BITMASK_UNIT_VISIBILITY_MASKS 6
 #define BITMASK_UNIT_VISIBILITY_AREA 7
 #define BITMASK_UNIT_VISIBILITY_LOQ 8
 #define BITMASK_UNIT_VISIBILITY_RECT_EXTENT 9
@@ -22,6 +21,7 @@
 #define BITMASK_UNIT_VISIBILITY_EDGES 11
 #define BITMASK_UNIT_VISIBILITY_SAMPLES 13
 #define BITMASK_BINDING_VISIBILITY_STATS 3  // SSBO of the statistics counters
+#define BITMASK_BINDING_VISIBILITY_MASKS 4  // SSBO of the half-plane masks
 // loq_smooth.frag
 #define BITMASK_UNIT_SMOOTH_LOQ 0
 #define BITMASK_UNIT_SMOOTH_NORMAL 1

@@ -6,29 +6,58 @@
 // the diagonal E (2X+1, 2Y+1) when the merged extent contains E's. Pass 2 takes the negative
 // neighbours (2X-1, 2Y), (2X, 2Y-1), (2X-1, 2Y-1) that their own pass 1 left. Extent: the
 // bounding rectangle of the merged extents (level-0 texels, inclusive; x0 > x1 = no caster);
-// depth: their minimum. Level 0 (u_from_hsm = 1): one micropatch per HSM level-0 texel.
+// depth: their minimum. Level 1 (u_from_hsm = 1) merges the HSM's level-0 texels, the level-0
+// micropatches, which are not stored. The 14 depths the merge reads are loaded once, and a
+// texel without caster (depth u_empty) has no extent to load.
 #include "techniques/bitmask/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_HSM0) uniform readonly image2D u_hsm0;
 layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_IN) uniform readonly image2D u_extent_in;
 layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_IN) uniform readonly image2D u_depth_in;
-layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_OUT) uniform writeonly image2D u_extent_out;
+layout(rgba32f,
+       binding = BITMASK_IMAGE_MICRORECTS_EXTENT_OUT) uniform writeonly image2D u_extent_out;
 layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_OUT) uniform writeonly image2D u_depth_out;
 uniform int u_from_hsm;
 uniform float u_empty;  // the distance of texels without casters
 
 const vec4 kNone = vec4(1e9, 1e9, -1e9, -1e9);
-ivec2 g_size;  // level k's size
+ivec2 g_size;       // level k's size
+ivec2 g_a;          // the reference point A in level k
+float g_depth[25];  // level k's depths at A + (-2..2, -2..2), row-major; u_empty outside
 
-bool inside(ivec2 q) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, g_size)); }
-float depthAt(ivec2 q) { return inside(q) ? imageLoad(u_depth_in, q).r : u_empty; }
-vec4 extentAt(ivec2 q) { return inside(q) ? imageLoad(u_extent_in, q) : kNone; }
-vec4 unite(vec4 a, vec4 b) { return vec4(min(a.xy, b.xy), max(a.zw, b.zw)); }
+int slot(ivec2 o) {
+    return (o.y + 2) * 5 + o.x + 2;
+}
+bool inside(ivec2 o) {
+    ivec2 q = g_a + o;
+    return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, g_size));
+}
+void load(ivec2 o) {
+    ivec2 q = g_a + o;
+    float z = u_empty;
+    if (inside(o)) z = u_from_hsm == 1 ? imageLoad(u_hsm0, q).r : imageLoad(u_depth_in, q).r;
+    g_depth[slot(o)] = z;
+}
+float depthAt(ivec2 o) {
+    return g_depth[slot(o)];
+}
+// A texel's extent; none where it holds no caster (outside the level too).
+vec4 extentAt(ivec2 o) {
+    if (depthAt(o) >= u_empty) return kNone;
+    ivec2 q = g_a + o;
+    return u_from_hsm == 1 ? vec4(q, q) : imageLoad(u_extent_in, q);
+}
+vec4 unite(vec4 a, vec4 b) {
+    return vec4(min(a.xy, b.xy), max(a.zw, b.zw));
+}
 bool contains(vec4 outer, vec4 e) {
-    return e.x > e.z || (all(lessThanEqual(outer.xy, e.xy)) && all(greaterThanEqual(outer.zw, e.zw)));
+    return e.x > e.z ||
+           (all(lessThanEqual(outer.xy, e.xy)) && all(greaterThanEqual(outer.zw, e.zw)));
 }
 // |a - b|, infinite when either has no caster.
-float gap(float a, float b) { return a >= u_empty || b >= u_empty ? 1e30 : abs(a - b); }
+float gap(float a, float b) {
+    return a >= u_empty || b >= u_empty ? 1e30 : abs(a - b);
+}
 // Whether the odd texel Q between even texels LO and HI merges with LO (pass 1 of LO).
 bool mergesDown(ivec2 q, ivec2 lo, ivec2 hi) {
     float z = depthAt(q);
@@ -44,33 +73,47 @@ void take(inout Merged m, ivec2 q) {
     m.extent = unite(m.extent, extentAt(q));
     m.depth = min(m.depth, depthAt(q));
 }
-// Pass 1 of the microrect with reference point A: A, B and D by depth, E by containment.
-Merged firstPass(ivec2 a) {
-    Merged m = Merged(extentAt(a), depthAt(a));
-    if (mergesDown(a + ivec2(1, 0), a, a + ivec2(2, 0))) take(m, a + ivec2(1, 0));
-    if (mergesDown(a + ivec2(0, 1), a, a + ivec2(0, 2))) take(m, a + ivec2(0, 1));
-    if (inside(a + 1) && contains(m.extent, extentAt(a + 1))) take(m, a + 1);
+// Pass 1 of the microrect with reference point A + O: A, B and D by depth, E by containment.
+Merged firstPass(ivec2 o) {
+    Merged m = Merged(extentAt(o), depthAt(o));
+    if (mergesDown(o + ivec2(1, 0), o, o + ivec2(2, 0))) take(m, o + ivec2(1, 0));
+    if (mergesDown(o + ivec2(0, 1), o, o + ivec2(0, 2))) take(m, o + ivec2(0, 1));
+    if (inside(o + 1) && contains(m.extent, extentAt(o + 1))) take(m, o + 1);
     return m;
+}
+
+// The depths that the merge of A reads: pass 1 of A and of A - (2, 2), and pass 2's
+// neighbours.
+bool loadDepths() {
+    const ivec2 kRead[14] =
+        ivec2[](ivec2(0, 0), ivec2(1, 0), ivec2(2, 0), ivec2(0, 1), ivec2(0, 2), ivec2(1, 1),
+                ivec2(-1, 0), ivec2(-2, 0), ivec2(0, -1), ivec2(0, -2), ivec2(-2, -2),
+                ivec2(-1, -2), ivec2(-2, -1), ivec2(-1, -1));
+    bool any_caster = false;
+    for (int i = 0; i < 14; ++i) {
+        load(kRead[i]);
+        any_caster = any_caster || depthAt(kRead[i]) < u_empty;
+    }
+    return any_caster;
 }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(u_extent_out)))) return;
-    if (u_from_hsm == 1) {
-        float z = imageLoad(u_hsm0, p).r;
-        imageStore(u_extent_out, p, z < u_empty ? vec4(p, p) : kNone);
-        imageStore(u_depth_out, p, vec4(z));
+    g_size = u_from_hsm == 1 ? imageSize(u_hsm0) : imageSize(u_extent_in);
+    g_a = 2 * p;
+    if (!loadDepths()) {
+        imageStore(u_extent_out, p, kNone);
+        imageStore(u_depth_out, p, vec4(u_empty));
         return;
     }
-    g_size = imageSize(u_extent_in);
-    ivec2 a = 2 * p;
-    Merged m = firstPass(a);
-    ivec2 left = a - ivec2(1, 0), down = a - ivec2(0, 1);
-    if (left.x >= 0 && !mergesDown(left, left - ivec2(1, 0), a)) take(m, left);
-    if (down.y >= 0 && !mergesDown(down, down - ivec2(0, 1), a)) take(m, down);
-    if (a.x > 0 && a.y > 0) {
-        ivec2 diagonal = a - 1;
-        if (!contains(firstPass(a - 2).extent, extentAt(diagonal))) take(m, diagonal);
+    Merged m = firstPass(ivec2(0));
+    const ivec2 left = ivec2(-1, 0), down = ivec2(0, -1);
+    if (g_a.x > 0 && !mergesDown(left, left - ivec2(1, 0), ivec2(0))) take(m, left);
+    if (g_a.y > 0 && !mergesDown(down, down - ivec2(0, 1), ivec2(0))) take(m, down);
+    if (g_a.x > 0 && g_a.y > 0) {
+        const ivec2 diagonal = ivec2(-1);
+        if (!contains(firstPass(ivec2(-2)).extent, extentAt(diagonal))) take(m, diagonal);
     }
     imageStore(u_extent_out, p, m.extent);
     imageStore(u_depth_out, p, vec4(m.depth));

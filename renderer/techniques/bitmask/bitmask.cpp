@@ -77,7 +77,7 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
     if (use_bitmask_) {
         const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
-        masks_ = bitmask::halfPlaneTexture(points);
+        masks_ = bitmask::halfPlaneBuffer(points);
         samples_ = bitmask::pointTexture(points);
         if (microquads_) edges_ = bitmask::edgeTexture(points);
     }

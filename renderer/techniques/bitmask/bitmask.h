@@ -148,7 +148,8 @@ private:
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<LoqTargets> targets_;
     std::unique_ptr<MicroRects> rects_;
-    gl::Texture receives_, masks_, samples_, edges_, budget_texture_;
+    gl::Texture receives_, samples_, edges_, budget_texture_;
+    gl::Buffer masks_;  // the half-plane tables
     gl::Program classify_, smooth_program_, visibility_;
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;

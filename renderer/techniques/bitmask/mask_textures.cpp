@@ -27,10 +27,16 @@ gl::Texture maskTexture(const std::vector<Mask>& masks, int width, const char* l
 
 }  // namespace
 
-gl::Texture halfPlaneTexture(const std::vector<glm::vec2>& points) {
+gl::Buffer halfPlaneBuffer(const std::vector<glm::vec2>& points) {
     auto tables = halfPlaneTables(points);
     tables.x.insert(tables.x.end(), tables.y.begin(), tables.y.end());
-    return maskTexture(tables.x, kTableResolution + 1, "bitmask half-plane masks");
+    std::vector<std::uint32_t> words;
+    words.reserve(tables.x.size() * kMaskWords);
+    for (const Mask& m : tables.x) words.insert(words.end(), m.begin(), m.end());
+    gl::Buffer b = gl::createBuffer("bitmask half-plane masks");
+    glNamedBufferStorage(b.id(), static_cast<GLsizeiptr>(words.size() * sizeof(std::uint32_t)),
+                         words.data(), 0);
+    return b;
 }
 
 gl::Texture pointTexture(const std::vector<glm::vec2>& points) {

@@ -26,12 +26,12 @@ void MicroRects::build(const gl::Texture& hsm) {
     gl::setUniform(program_, "u_empty", DepthRanges::kEmpty);
     glBindImageTexture(BITMASK_IMAGE_MICRORECTS_HSM0, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
                        GL_RG32F);
-    for (int level = 0; level < levels_; ++level) {
-        gl::setUniform(program_, "u_from_hsm", level == 0 ? 1 : 0);
-        const int finer = level == 0 ? 0 : level - 1;
-        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_IN, extent_.id(), finer, GL_FALSE, 0,
+    // Level 0 is the HSM's level 0 (micropatches): level 1 merges it directly.
+    for (int level = 1; level < levels_; ++level) {
+        gl::setUniform(program_, "u_from_hsm", level == 1 ? 1 : 0);
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_IN, extent_.id(), level - 1, GL_FALSE, 0,
                            GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_IN, depth_.id(), finer, GL_FALSE, 0,
+        glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_IN, depth_.id(), level - 1, GL_FALSE, 0,
                            GL_READ_ONLY, GL_R32F);
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_OUT, extent_.id(), level, GL_FALSE, 0,
                            GL_WRITE_ONLY, GL_RGBA32F);

@@ -10,12 +10,13 @@ namespace penumbra::techniques::bitmask {
 class MicroRects {
 public:
     explicit MicroRects(int map_size);
-    // Builds every level from HSM (level 0 of an RG32F (min, max) pyramid, kEmpty where no
-    // caster is).
+    // Builds levels 1 and up from HSM (level 0 of an RG32F (min, max) pyramid, kEmpty where
+    // no caster is); level 0, the micropatches, is the HSM's and is left unwritten.
     void build(const gl::Texture& hsm);
 
-    const gl::Texture& extent() const { return extent_; }  // RGBA32F: x0, y0, x1, y1 (level 0)
-    const gl::Texture& depth() const { return depth_; }    // R32F: nearest merged distance
+    // RGBA32F: x0, y0, x1, y1 (level-0 texels); levels 1 and up
+    const gl::Texture& extent() const { return extent_; }
+    const gl::Texture& depth() const { return depth_; }  // R32F: nearest merged distance
 
 private:
     int map_size_, levels_;

@@ -78,7 +78,7 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
     glUseProgram(p.id());
     bindSearch(ctx, p, light, window);
     if (use_bitmask_) {
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_MASKS, masks_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_MASKS, masks_.id());
         glBindTextureUnit(BITMASK_UNIT_VISIBILITY_SAMPLES, samples_.id());
         gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
         gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
