@@ -215,3 +215,19 @@ TEST(SsmLayersGL, ABothObjectHidesTheLightBelowItsOwnHorizon) {
     std::printf("ssm, a both box: visibility MAE over the box %.4f\n", mae);
     EXPECT_LE(mae, 0.005);
 }
+
+TEST(SsmLayersGL, ATopFaceDoesNotStripeItsOwnSteepWall) {
+    // A random scene nobody tuned on (scripts/random-scenes seed 20, box_steep_wall.json): a
+    // tall box whose lit wall faces the light's centre at a steep angle, so the wall holds only
+    // a thin strip of the receiver map and the box's top face lies in front of it at those
+    // texels. Such patches were let through as "separated" (an ear over a head) and striped the
+    // wall; a patch of the wall's own object must also lie above the wall's tangent plane, as
+    // the top face does not (its light is below the wall's horizon, taken in closed form).
+    // Measured 0.230 before, 0.054 after: what is left is a saw-toothed band at the wall's foot,
+    // whose pixels match the floor's layer.
+    const Image exact = renderScene("box_steep_wall.json", {});
+    const Image img = renderScene("box_steep_wall.json", {{"technique", ssm(4)}});
+    const double box = visibilityMae(img, exact, 2, 2);
+    std::printf("ssm layers 4, box_steep_wall: the box's visibility MAE %.4f\n", box);
+    EXPECT_LE(box, 0.08);
+}
