@@ -14,9 +14,11 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
                                                  ErrorBudget& sum_budget,
                                                  std::optional<PixelErrorBudget>& budget,
                                                  Refinement& r) {
-    // Each corner map of the level gets one slot, shared by every cell it is a corner of.
+    // Each corner map of the level gets one slot, shared by every cell it is a corner of (the
+    // lit path's bits hold every view: slot = view).
     std::vector<int> views, slot(tree.samples().size(), -1);
     auto slotOf = [&](int view) {
+        if (litPath()) return view;
         if (slot[size_t(view)] < 0) {
             slot[size_t(view)] = int(views.size());
             views.push_back(view);
@@ -32,7 +34,12 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
             corners.push_back(slotOf(v));
     ShadowBits bits;
     ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
-        bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
+        if (!litPath()) {
+            bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
+            return;
+        }
+        map_compare_->resize(receivers, compare_.stride);  // for raiseLevels()
+        bits = lit_bits_->read(int(views_.size()), compare_.stride);
     });
     if (level == 0) {
         shadowed_ = bits.anyShadowed(corners);
