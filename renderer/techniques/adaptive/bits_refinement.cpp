@@ -1,6 +1,6 @@
-// `adaptive`'s default refinement (metric "error" on hard tests): one pass per level tells which
-// of the level's corner maps shadow each pixel, the CPU compares every cell's diagonals on those
-// bits and the per-pixel error budget picks the cells to split (see adaptive.h).
+// `adaptive`'s default refinement (metric "error" on hard tests): the bits of which of the level's
+// corner maps shadow each pixel (LitBits' or one pass over the array), the CPU's comparison of
+// every cell's diagonals on them and the error budget's choice of cells to split (adaptive.h).
 #include <cmath>
 #include <string>
 
