@@ -146,7 +146,7 @@ void Adaptive::renderAndTest(frame::FrameContext& ctx, int first, int n) {
     const passes::GBuffer& receivers = ctx.gbuffer;
     for (int base = first; base < n; base += scratch_->layers()) {
         const int count = std::min(scratch_->layers(), n - base);
-        scratch_->render(ctx.gpu, base, count);
+        scratch_->render(ctx.gpu, base, count, 0);  // clears only the COUNT layers drawn
         lit_bits_->test(receivers, *scratch_, base, count, ctx.currentLight(), compare_);
     }
 }
