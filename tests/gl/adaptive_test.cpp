@@ -263,3 +263,31 @@ TEST(AdaptiveGL, ShadowTestComparisonRefinesWhereShadowsDiffer) {
         EXPECT_LE(tests.stats.value("maps_rendered", 0), depth.stats.value("maps_rendered", 0));
     }
 }
+
+TEST(AdaptiveGL, DefaultStorageHoldsOneBatchOfMaps) {
+    // The default storage tests each map right after its batch is rendered and keeps its shadow
+    // bits, so 81 maps need no more than one batch of 32 alive; the array holds them all.
+    const std::string opts = R"(, "max_depth": 3, "target_error": 0)";
+    auto bits = render("closed_form.json", adaptive(opts));
+    auto array = render("closed_form.json", adaptive(opts + R"(, "storage": "array")"));
+    EXPECT_EQ(bits.stats.value("maps_rendered", 0), 81);
+    EXPECT_LE(bits.stats.value("maps_held", 1 << 30), 32);
+    EXPECT_GE(array.stats.value("maps_held", 0), 81);
+    // The same tests, comparisons and weights: the same refinement and visibility.
+    EXPECT_EQ(array.stats.value("maps_rendered", 0), 81);
+    EXPECT_LE(penumbra::testing::maxAbsDifference(bits.visibility, array.visibility), 1e-5);
+}
+
+TEST(AdaptiveGL, DefaultStorageRefinesAsTheArray) {
+    // A partial refinement (target 0.007 stops short of the grid): the bits' comparisons
+    // choose the same cells as the shadow-bits pass over the array's maps.
+    auto bits = render("closed_form.json", adaptive(R"(, "target_error": 0.007)"));
+    auto array =
+        render("closed_form.json", adaptive(R"(, "target_error": 0.007, "storage": "array")"));
+    EXPECT_EQ(bits.stats.value("maps_rendered", 0), array.stats.value("maps_rendered", 0));
+    EXPECT_EQ(bits.stats.value("comparisons", 0), array.stats.value("comparisons", 0));
+    EXPECT_DOUBLE_EQ(bits.stats.value("estimated_error", 0.0),
+                     array.stats.value("estimated_error", 0.0));
+    EXPECT_EQ(bits.depth, array.depth);
+    EXPECT_LE(penumbra::testing::maxAbsDifference(bits.visibility, array.visibility), 1e-5);
+}

@@ -27,6 +27,7 @@ Adaptive::Adaptive(const Params& p)
       weighting_(p.getEnum(kWeights)),
       accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
       rss_estimate_(p.getEnum(kEstimate) == Estimate::Rss),
+      bits_storage_(p.getEnum(kStorage) == Storage::Auto),
       subdivision_(p.getEnum(kSubdivision)),
       jitter_(p.get(kJitter)),
       seed_(static_cast<unsigned>(p.get(kSeed))),
@@ -54,6 +55,12 @@ void Adaptive::prepare(const gl::ContextInfo& gl, const passes::GpuScene&) {
     if (accumulate_path_)  // one map at a time, accumulated from layer 0
         scratch_ =
             std::make_unique<passes::ShadowMapBatch>(settings_.map_size, 1, gl.has_vertex_layer);
+    if (litPath()) {  // a batch at a time, kept as shadow bits
+        scratch_ = std::make_unique<passes::ShadowMapBatch>(
+            settings_.map_size, std::min(kTestBatch, std::max(gl.max_array_layers, 1)),
+            gl.has_vertex_layer);
+        lit_bits_ = std::make_unique<adaptive::LitBits>();
+    }
     accumulate_ = std::make_unique<passes::ShadowAccumulate>();
     map_compare_ = std::make_unique<adaptive::MapCompare>();
     if (light_centre_)
@@ -70,6 +77,7 @@ void Adaptive::render(frame::FrameContext& ctx) {
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, zero);
+    if (litPath()) lit_bits_->begin(ctx.gbuffer, max_maps_);
 
     if (light_centre_) {
         const passes::CameraMatrices m = lightCentreView(ctx);
@@ -164,7 +172,7 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
             glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         });
     } else {
-        // All maps of the light in one pass over the texture array (3.4.2).
+        // All maps of the light in one pass over the texture array (3.4.2), or over their bits.
         const auto weights = tree.weights(weighting_);
         for (size_t i = 0; i < views_.size(); ++i) {
             views_[i].origin.w = weights[i];
@@ -173,7 +181,14 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
         views_buffer_.upload(views_);
         ctx.pass("adaptive_eval", [&] {
             ctx.bindOutput();
-            addToVisibility(ctx, *maps_, 0, n);
+            if (!litPath()) return addToVisibility(ctx, *maps_, 0, n);
+            glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE);
+            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags());
+            glDisable(GL_BLEND);
+            glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         });
     }
 }
@@ -190,6 +205,9 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     st["queries"] = st.value("queries", 0) + r.queries;
     st["depth_reached"] = std::max(st.value("depth_reached", 0), depth_reached);
     st["map_budget_hit"] = st.value("map_budget_hit", false) || r.budget_hit;
+    // The most maps alive at once: a batch on the lit path, else the array's layers.
+    const int held = litPath() ? scratch_->layers() : maps_ ? maps_->layers() : 0;
+    st["maps_held"] = std::max(st.value("maps_held", 0), held);
     if (error_metric_)
         st["estimated_error"] = std::max(st.value("estimated_error", 0.0), r.estimated_error);
 }
@@ -227,10 +245,13 @@ const TechniqueInfo kAdaptiveTechnique = {
     nullptr,
     // The maps, the accumulation path's scratch map and the light-view G-buffer (48 bytes a
     // texel).
-    [](const Params& p, std::uint64_t) {
+    [](const Params& p, std::uint64_t pixels) {
         const int maps = adaptive::mapLayers(p.get(adaptive::kMaxMaps), p.get(kMapSize));
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         MemoryTerms out = {shadowMapArrayTerm(p, maps)};
+        // The lit path's batch and bits (the array's term stays: a bound on both paths).
+        out.push_back({"image.width", "the per-pixel shadow bits of the maps",
+                       saturatingProduct({pixels, std::uint64_t(maps + 31) / 32, 4})});
         if (p.getEnum(adaptive::kEvaluation) == adaptive::Evaluation::Accumulate) {
             out.push_back(shadowMapArrayTerm(p, 1));
             out.back().what = "the scratch map";

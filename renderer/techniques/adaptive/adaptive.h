@@ -14,6 +14,7 @@
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/adaptive/error_budget.h"
 #include "renderer/techniques/adaptive/light_quadtree.h"
+#include "renderer/techniques/adaptive/lit_bits.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
 #include "renderer/techniques/light_sampling.h"
@@ -30,6 +31,7 @@ enum class MetricArea { Map, Screen };
 enum class Subdivision { Auto, Quad, Linear };
 enum class Evaluation { Array, Accumulate };
 enum class Estimate { Sum, Rss };
+enum class Storage { Auto, Array };
 using Weighting = LightQuadtree::Weighting;
 
 inline constexpr EnumKey<Metric, 3> kMetric{"metric", {"error", "global", "tile"}};
@@ -41,6 +43,7 @@ inline constexpr EnumKey<Subdivision, 3> kSubdivision{"subdivision", {"auto", "q
 inline constexpr EnumKey<Weighting, 3> kWeights{"weights", {"area", "paper", "equal"}};
 inline constexpr EnumKey<Evaluation, 2> kEvaluation{"evaluation", {"array", "accumulate"}};
 inline constexpr EnumKey<Estimate, 2> kEstimate{"estimate", {"sum", "rss"}};
+inline constexpr EnumKey<Storage, 2> kStorage{"storage", {"auto", "array"}};
 
 inline constexpr FloatKey kTargetError{"target_error"};
 inline constexpr FloatKey kEpsilon{"epsilon"};
@@ -102,6 +105,12 @@ inline constexpr std::array kAdaptiveParams = {
     enumParam(kEvaluation, Evaluation::Array,
               "array: all maps in one pass over a texture array (3.4.2); accumulate: each map "
               "added to the accumulation buffer right after it is rendered (3.4.1)"),
+    enumParam(kStorage, Storage::Auto,
+              "auto: with metric \"error\" (hard-test comparisons), reprojection \"camera\", "
+              "evaluation \"array\" and pcf 1 (the defaults), maps are rendered and tested 32 at "
+              "a time and kept as one bit per pixel, which the comparisons and the evaluation "
+              "read (the same image as the array); otherwise, and with array: every map is kept "
+              "in a texture array until the evaluation"),
     boolParam(kJitter, true,
               "move each sample to a random point of its finest-grid cell (false: the paper's "
               "regular lattice, which aliases with edges parallel to the light's)"),
@@ -114,6 +123,9 @@ inline constexpr std::array kAdaptiveParams = {
 
 // Maps rendered per layered draw.
 inline constexpr int kScratchLayers = 16;
+// Maps rendered and tested per batch where the maps are kept as shadow bits (LitBits).
+inline constexpr int kTestBatch = 32;
+static_assert(kTestBatch == 32, "the storage parameter's text says 32 maps a batch");
 
 // The most bytes of the array of maps (it grows to max_maps): at larger map sizes max_maps is
 // lowered to what fits (128 maps of 2048^2), never below the 4 corners.
@@ -168,6 +180,14 @@ private:
                                            std::optional<PixelErrorBudget>& budget, Refinement& r);
     // Metric "error" on hard-test comparisons: the counts come from shadow bits.
     bool bitsPath() const { return error_metric_ && compare_.tests && compare_.tile_size == 0; }
+    // The bits path in the camera view with hard tests and the array evaluation (the defaults):
+    // every map is tested at every pixel once, right after it is rendered in a batch of
+    // kTestBatch, and kept as a bit per pixel (LitBits); comparisons and the evaluation read
+    // the bits, so no map outlives its batch.
+    bool litPath() const {
+        return bits_storage_ && bitsPath() && !light_centre_ && !accumulate_path_ &&
+               settings_.test.pcf == 1;
+    }
 
     // Adds the light's maps, weighted, into its visibility.
     void evaluate(frame::FrameContext& ctx, const LightQuadtree& tree);
@@ -200,6 +220,9 @@ private:
 
     // Renders the samples without a map yet into their layers of maps_ (one pass per level).
     void renderNewMaps(frame::FrameContext& ctx, const LightQuadtree& tree, int level);
+    // The lit path: renders views FIRST..N-1 into scratch_ kTestBatch at a time and sets their
+    // shadow bits.
+    void renderAndTest(frame::FrameContext& ctx, int first, int n);
 
     // Grows maps_ to at least N layers, keeping its first FILLED maps.
     void reserveMaps(int filled, int n);
@@ -225,6 +248,7 @@ private:
     LightQuadtree::Weighting weighting_;
     bool accumulate_path_;
     bool rss_estimate_;
+    bool bits_storage_;    // storage "auto"
     double shadowed_ = 0;  // the bits path: pixels any root corner shadows, this light
     bool vertex_layer_ = false;
     Subdivision subdivision_;
@@ -235,6 +259,7 @@ private:
     std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
     std::unique_ptr<passes::ShadowAccumulate> accumulate_;
     std::unique_ptr<MapCompare> map_compare_;
+    std::unique_ptr<LitBits> lit_bits_;            // the lit path's
     std::unique_ptr<passes::GBuffer> light_view_;  // receivers seen from the light's centre
     passes::SampleViewBuffer views_buffer_;
     std::vector<passes::SampleView> views_;

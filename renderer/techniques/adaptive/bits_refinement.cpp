@@ -1,6 +1,6 @@
-// `adaptive`'s default refinement (metric "error" on hard tests): one pass per level tells which
-// of the level's corner maps shadow each pixel, the CPU compares every cell's diagonals on those
-// bits and the per-pixel error budget picks the cells to split (see adaptive.h).
+// `adaptive`'s default refinement (metric "error" on hard tests): the bits of which of the level's
+// corner maps shadow each pixel (LitBits' or one pass over the array), the CPU's comparison of
+// every cell's diagonals on them and the error budget's choice of cells to split (adaptive.h).
 #include <cmath>
 #include <string>
 
@@ -14,9 +14,11 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
                                                  ErrorBudget& sum_budget,
                                                  std::optional<PixelErrorBudget>& budget,
                                                  Refinement& r) {
-    // Each corner map of the level gets one slot, shared by every cell it is a corner of.
+    // Each corner map of the level gets one slot, shared by every cell it is a corner of (the
+    // lit path's bits hold every view: slot = view).
     std::vector<int> views, slot(tree.samples().size(), -1);
     auto slotOf = [&](int view) {
+        if (litPath()) return view;
         if (slot[size_t(view)] < 0) {
             slot[size_t(view)] = int(views.size());
             views.push_back(view);
@@ -32,7 +34,12 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
             corners.push_back(slotOf(v));
     ShadowBits bits;
     ctx.pass("adaptive_compare[" + std::to_string(level) + "]", [&] {
-        bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
+        if (!litPath()) {
+            bits = map_compare_->shadowBits(receivers, *maps_, ctx.currentLight(), compare_, views);
+            return;
+        }
+        map_compare_->resize(receivers, compare_.stride);  // for raiseLevels()
+        bits = lit_bits_->read(int(views_.size()), compare_.stride);
     });
     if (level == 0) {
         shadowed_ = bits.anyShadowed(corners);

@@ -10,18 +10,24 @@ namespace {
 // Storage-buffer binding of the tile counters (glsl/techniques/adaptive/compare.frag).
 }  // namespace
 
+unsigned createRawDepthSampler() {
+    unsigned sampler = 0;
+    glCreateSamplers(1, &sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return sampler;
+}
+
 MapCompare::MapCompare()
     : program_(gl::buildProgram("adaptive compare",
                                 {"passes/fullscreen.vert", "techniques/adaptive/compare.frag"})),
       bits_program_(
           gl::buildProgram("adaptive shadow bits",
                            {"passes/fullscreen.vert", "techniques/adaptive/shadow_bits.frag"})) {
-    glCreateSamplers(1, &sampler_);
-    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    sampler_ = createRawDepthSampler();
 }
 
 MapCompare::~MapCompare() {

@@ -34,6 +34,9 @@ struct CompareResult {
     double max_tile = 0;  // most disagreeing pixels in one tile (0 without tiles)
 };
 
+// A new sampler object reading the raw depths of shadow maps: nearest, clamped, no compare.
+unsigned createRawDepthSampler();
+
 class MapCompare {
 public:
     MapCompare();
@@ -67,11 +70,12 @@ public:
     void writeLevels(GLuint dst) const;
     // Zeroes the levels (begin() keeps them, so the series of one light accumulate).
     void clearLevels();
+    // Sizes the levels (cleared when their size changes) and the bit target to GBUFFER /
+    // STRIDE: raiseLevels() then takes pixel indices of a view of that size.
+    void resize(const passes::GBuffer& gbuffer, int stride);
 
 private:
     void queue(int mode, std::array<int, 4> views, int level);
-    // Sizes levels_ (cleared) and the bit target to GBUFFER / STRIDE.
-    void resize(const passes::GBuffer& gbuffer, int stride);
 
     gl::Program program_;
     gl::Program bits_program_;  // shadow_bits.frag

@@ -106,6 +106,12 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
     }
     const int n = static_cast<int>(views_.size());
     if (first == n) return;
+    if (litPath()) {
+        views_buffer_.upload(views_);
+        ctx.pass("adaptive_maps[" + std::to_string(level) + "]",
+                 [&] { renderAndTest(ctx, first, n); });
+        return;
+    }
     reserveMaps(first, n);
     if (accumulate_path_) {
         // Each map is added with its unnormalised weight as soon as it exists (3.4.1); the
@@ -132,6 +138,17 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
         for (int base = first; base < n; base += kScratchLayers)
             maps_->render(ctx.gpu, base, std::min(kScratchLayers, n - base), base);
     });
+}
+
+// The lit path: renders views FIRST..N-1 into scratch_ kTestBatch at a time and sets their
+// shadow bits.
+void Adaptive::renderAndTest(frame::FrameContext& ctx, int first, int n) {
+    const passes::GBuffer& receivers = ctx.gbuffer;
+    for (int base = first; base < n; base += scratch_->layers()) {
+        const int count = std::min(scratch_->layers(), n - base);
+        scratch_->render(ctx.gpu, base, count, 0);  // clears only the COUNT layers drawn
+        lit_bits_->test(receivers, *scratch_, base, count, ctx.currentLight(), compare_);
+    }
 }
 
 // Grows maps_ to at least N layers (twice its layers, at least 25, at most max_maps), keeping

@@ -1,0 +1,59 @@
+#version 450 core
+// `adaptive`: the light's visibility from its maps' shadow bits (lit_bits.frag): adds
+// sum_k w_k lit_k, and the beauty sums, as passes/shadow_accumulate.frag does from the maps
+// themselves (hard tests), with no map left to read: each view costs a bit and a few flops.
+#include "common/bindings.glsl"
+#include "common/caster_flags.glsl"
+#include "common/geometric_normal.glsl"
+#include "techniques/adaptive/bindings.glsl"
+
+layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
+    vec4 u_lookups[3 * MAX_SAMPLE_LOOKUPS];
+};
+layout(std430, binding = ADAPTIVE_BINDING_LIT_BITS) readonly buffer LitBits {
+    uint u_bits[];  // plane-major: word w of pixel p at w * u_pixels + p; set: shadowed
+};
+
+in vec2 v_uv;
+layout(binding = UNIT_ACCUMULATE_POSITION) uniform sampler2D u_position;
+layout(binding = UNIT_ACCUMULATE_NORMAL) uniform sampler2D u_normal;
+layout(binding = UNIT_ACCUMULATE_ID) uniform isampler2D u_id;
+
+uniform int u_count;   // the light's views
+uniform int u_width;   // G-buffer width
+uniform int u_pixels;  // G-buffer pixels (one bit plane)
+#include "common/light_frame.glsl"
+
+layout(location = 0) out vec4 o_visibility;
+
+void main() {
+    ivec2 pix = ivec2(gl_FragCoord.xy);
+    vec4 pos = texelFetch(u_position, pix, 0);
+    if (pos.w == 0.0) discard;
+    vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+    vec3 q0 =
+        vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up), dot(pos.xyz, u_light_forward));
+    vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
+    bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
+    vec3 g = geometricNormal(pix);
+    vec3 gfl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
+    int at = pix.y * u_width + pix.x;
+    float sum = 0.0, weighted = 0.0, weights = 0.0;
+    for (int base = 0; base < u_count; base += 32) {
+        uint shadowed = u_bits[(base >> 5) * u_pixels + at];
+        for (int i = 0; i < min(32, u_count - base); ++i) {
+            int k = base + i;
+            float w = u_lookups[3 * k + 2].y;
+            // As shadow_accumulate.frag: a sample below a caster's tangent plane is hidden.
+            vec3 d = u_lookups[3 * k].xyz - q0;
+            bool hidden = ((shadowed >> uint(i)) & 1u) != 0u || (casts && dot(gfl, d) <= 0.0);
+            float lit = hidden ? 0.0 : 1.0;
+            float d2 = dot(d, d);
+            float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
+            sum += w * lit;
+            weighted += w * c * lit;
+            weights += w * c;
+        }
+    }
+    o_visibility = vec4(sum, weighted, weights, 1.0);  // a: the light was sampled
+}

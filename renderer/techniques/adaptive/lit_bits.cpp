@@ -1,0 +1,115 @@
+// `adaptive`: per-pixel shadow bits of every map of a light, set batch by batch and read back or
+// weighted into visibility; see lit_bits.h.
+#include "renderer/techniques/adaptive/lit_bits.h"
+#include "glsl/techniques/adaptive/bindings.glsl"
+
+#include <algorithm>
+#include <vector>
+
+#include "renderer/passes/bindings.h"
+
+namespace penumbra::techniques::adaptive {
+
+LitBits::LitBits()
+    : test_program_(gl::buildProgram(
+          "adaptive lit bits", {"passes/fullscreen.vert", "techniques/adaptive/lit_bits.frag"})),
+      eval_program_(
+          gl::buildProgram("adaptive lit evaluation",
+                           {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})) {
+    sampler_ = createRawDepthSampler();
+}
+
+LitBits::~LitBits() {
+    glDeleteSamplers(1, &sampler_);
+}
+
+void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
+    if (gbuffer.width() != width_ || gbuffer.height() != height_ || !fbo_.id()) {
+        width_ = gbuffer.width();
+        height_ = gbuffer.height();
+        fbo_ = gl::createFramebuffer("adaptive lit bits");
+        glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
+        glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
+    }
+    planes_ = std::max(1, (views + 31) / 32);
+    const size_t need = size_t(planes_) * size_t(width_) * size_t(height_);
+    if (need > capacity_ || !bits_.id()) {
+        bits_ = gl::createBuffer("adaptive lit bits");
+        glNamedBufferData(bits_.id(), GLsizeiptr(need * sizeof(GLuint)), nullptr, GL_DYNAMIC_READ);
+        capacity_ = need;
+    }
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(bits_.id(), GL_R32UI, 0, GLsizeiptr(need * sizeof(GLuint)),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch,
+                   int view_base, int count, const scene::RectLight& light,
+                   const CompareSettings& s) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(test_program_.id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, batch.depth().id());
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
+    gl::setUniform(test_program_, "u_view_base", view_base);
+    gl::setUniform(test_program_, "u_count", std::min(count, 32));
+    gl::setUniform(test_program_, "u_width", width_);
+    gl::setUniform(test_program_, "u_pixels", width_ * height_);
+    gl::setUniform(test_program_, "u_normal_offset", s.normal_offset);
+    gl::setUniform(test_program_, "u_depth_bias", s.depth_bias);
+    passes::setLightFrameUniforms(test_program_, light);
+    fullscreen_.draw();
+    // The next batch's test ORs into the same words; the readback and evaluation read them.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);
+    glUseProgram(0);
+}
+
+ShadowBits LitBits::read(int views, int stride) const {
+    stride = std::max(stride, 1);
+    const int w = (width_ + stride - 1) / stride, h = (height_ + stride - 1) / stride;
+    const size_t plane = size_t(width_) * size_t(height_);
+    ShadowBits out;
+    out.pixels = size_t(w) * size_t(h);
+    out.words = std::clamp((views + 31) / 32, 1, planes_);
+    out.scale = double(stride) * double(stride);
+    std::vector<GLuint> all(plane * size_t(out.words));
+    glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(all.size() * sizeof(GLuint)), all.data());
+    out.bits.assign(out.pixels * size_t(out.words), 0u);
+    for (int y = 0; y < h; ++y) {
+        const size_t sy = size_t(std::min(y * stride + stride / 2, height_ - 1));
+        for (int x = 0; x < w; ++x) {
+            const size_t sx = size_t(std::min(x * stride + stride / 2, width_ - 1));
+            const size_t p = size_t(y) * size_t(w) + size_t(x);
+            for (int k = 0; k < out.words; ++k)
+                out.bits[p * size_t(out.words) + size_t(k)] =
+                    all[size_t(k) * plane + sy * size_t(width_) + sx];
+        }
+    }
+    return out;
+}
+
+void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
+                       const gl::Buffer& caster_flags) {
+    glUseProgram(eval_program_.id());
+    glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(UNIT_ACCUMULATE_ID, gbuffer.id().id());
+    gbuffer.bindGeometricNormal();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, caster_flags.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
+    gl::setUniform(eval_program_, "u_count", std::min(count, 32 * planes_));
+    gl::setUniform(eval_program_, "u_width", width_);
+    gl::setUniform(eval_program_, "u_pixels", width_ * height_);
+    passes::setLightFrameUniforms(eval_program_, light);
+    glDisable(GL_DEPTH_TEST);
+    fullscreen_.draw();
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::techniques::adaptive

@@ -1,0 +1,53 @@
+// `adaptive`: every light-sample map's hard test at every G-buffer pixel, kept as one bit per map
+// for the whole light, so that maps are rendered in small batches, tested once and dropped.
+#pragma once
+
+#include <cstddef>
+
+#include "renderer/gl/handles.h"
+#include "renderer/gl/program.h"
+#include "renderer/passes/fullscreen.h"
+#include "renderer/passes/gbuffer.h"
+#include "renderer/passes/shadow_maps.h"
+#include "renderer/scene/scene.h"
+#include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/adaptive/shadow_bits.h"
+
+namespace penumbra::techniques::adaptive {
+
+// The bits (set: shadowed) of up to 32 x planes views per pixel, in a storage buffer (plane-major,
+// lit_bits.frag); the comparisons read them back at a stride and lit_eval.frag weights them.
+class LitBits {
+public:
+    LitBits();
+    ~LitBits();
+    LitBits(const LitBits&) = delete;
+    LitBits& operator=(const LitBits&) = delete;
+
+    // Sizes the bits for GBUFFER and at most VIEWS views, all clear (lit everywhere).
+    void begin(const passes::GBuffer& gbuffer, int views);
+    // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's
+    // layers 0..COUNT-1 (views bound at kBindingSampleViews/kBindingSampleLookups): hard tests
+    // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's.
+    void test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch, int view_base,
+              int count, const scene::RectLight& light, const CompareSettings& settings);
+    // Views 0..VIEWS-1 at the centre pixel of every STRIDE x STRIDE block (as shadow_bits.frag
+    // samples them), slot = view (blocking).
+    ShadowBits read(int views, int stride) const;
+    // Adds sum_k w_k lit_k over views 0..COUNT-1 and the beauty sums into colour 0 of the bound
+    // framebuffer, as passes::ShadowAccumulate with pcf 1 (the caller sets the blending).
+    void evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
+                  const gl::Buffer& caster_flags);
+
+private:
+    gl::Program test_program_;
+    gl::Program eval_program_;
+    passes::Fullscreen fullscreen_;
+    gl::Framebuffer fbo_;  // no attachments: the G-buffer's size, for the test passes
+    gl::Buffer bits_;
+    size_t capacity_ = 0;  // words in bits_
+    int width_ = 0, height_ = 0, planes_ = 0;
+    unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
+};
+
+}  // namespace penumbra::techniques::adaptive
