@@ -51,18 +51,12 @@ void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch&
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(test_program_.id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, batch.depth().id());
-    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
+    bindMapTest(test_program_, gbuffer, batch.depth().id(), sampler_, s, light);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
     gl::setUniform(test_program_, "u_view_base", view_base);
     gl::setUniform(test_program_, "u_count", std::min(count, 32));
     gl::setUniform(test_program_, "u_width", width_);
     gl::setUniform(test_program_, "u_pixels", width_ * height_);
-    gl::setUniform(test_program_, "u_normal_offset", s.normal_offset);
-    gl::setUniform(test_program_, "u_depth_bias", s.depth_bias);
-    passes::setLightFrameUniforms(test_program_, light);
     fullscreen_.draw();
     // The next batch's test ORs into the same words; the readback and evaluation read them.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

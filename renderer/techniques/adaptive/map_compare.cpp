@@ -6,10 +6,6 @@
 #include <algorithm>
 
 namespace penumbra::techniques::adaptive {
-namespace {
-// Storage-buffer binding of the tile counters (glsl/techniques/adaptive/compare.frag).
-}  // namespace
-
 unsigned createRawDepthSampler() {
     unsigned sampler = 0;
     glCreateSamplers(1, &sampler);
@@ -19,6 +15,17 @@ unsigned createRawDepthSampler() {
     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     return sampler;
+}
+
+void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
+                 unsigned sampler, const CompareSettings& s, const scene::RectLight& light) {
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps);
+    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler);
+    gl::setUniform(program, "u_normal_offset", s.normal_offset);
+    gl::setUniform(program, "u_depth_bias", s.depth_bias);
+    passes::setLightFrameUniforms(program, light);
 }
 
 MapCompare::MapCompare()
@@ -60,18 +67,12 @@ void MapCompare::begin(const passes::GBuffer& gbuffer, const passes::ShadowMapBa
         gl::setUniform(program_, "u_tiles_x", tx);
     }
     glUseProgram(program_.id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps.depth().id());
-    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
+    bindMapTest(program_, gbuffer, maps.depth().id(), sampler_, s, light);
     gl::setUniform(program_, "u_tile_size", tiles_ > 0 ? s.tile_size : 0);
     gl::setUniform(program_, "u_stride", stride_);
     gl::setUniform(program_, "u_gamma", s.gamma);
     gl::setUniform(program_, "u_relative", s.relative ? 1 : 0);
     gl::setUniform(program_, "u_tests", s.tests ? 1 : 0);
-    gl::setUniform(program_, "u_normal_offset", s.normal_offset);
-    gl::setUniform(program_, "u_depth_bias", s.depth_bias);
-    passes::setLightFrameUniforms(program_, light);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MAX);
@@ -110,14 +111,8 @@ ShadowBits MapCompare::shadowBits(const passes::GBuffer& gbuffer,
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(bits_program_.id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps.depth().id());
-    glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler_);
+    bindMapTest(bits_program_, gbuffer, maps.depth().id(), sampler_, s, light);
     gl::setUniform(bits_program_, "u_stride", stride_);
-    gl::setUniform(bits_program_, "u_normal_offset", s.normal_offset);
-    gl::setUniform(bits_program_, "u_depth_bias", s.depth_bias);
-    passes::setLightFrameUniforms(bits_program_, light);
     std::vector<GLuint> chunk(out.pixels * 4);
     for (int k = 0; k < passes; ++k) {
         const int first = k * kPerPass;

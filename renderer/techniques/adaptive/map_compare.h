@@ -37,6 +37,12 @@ struct CompareResult {
 // A new sampler object reading the raw depths of shadow maps: nearest, clamped, no compare.
 unsigned createRawDepthSampler();
 
+// Binds what every test of G-buffer points against shadow maps reads, for PROGRAM (in use):
+// the G-buffer's position and normal, the maps' depth array MAPS through SAMPLER (raw depths),
+// S's normal offset and depth bias, and LIGHT's frame.
+void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
+                 unsigned sampler, const CompareSettings& s, const scene::RectLight& light);
+
 class MapCompare {
 public:
     MapCompare();
