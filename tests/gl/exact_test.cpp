@@ -190,10 +190,12 @@ Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
 // two_sided and lod the defaults, its visibility error fell to 0.0158 and beauty's to 0.0171
 // (1.08x; where the change falls against E is not analysed yet). With own patches shadowing
 // only above the receiver's tangent plane (no "separated" rule), visibility 0.0151 and beauty
-// 0.0167 (1.108x: both fell, visibility more), so 1.15.
+// 0.0167 (1.108x: both fell, visibility more). With the light-sample masks (accumulate=samples,
+// far_side=second and its third map, seal) both fell again, visibility more: 0.0075 and 0.0094
+// (1.25x), so 1.3.
 // Every other technique is strict.
 double horizonSlack(std::string_view name) {
-    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : name == "ssm" ? 1.15 : 1.0;
+    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : name == "ssm" ? 1.3 : 1.0;
 }
 
 std::string techniqueJson(std::string_view name) {

@@ -15,6 +15,8 @@
 #define SSM_UNIT_PEEL_PREVIOUS 5  // the layers peeled so far
 #define SSM_UNIT_RESOLVE_DEPTH 0
 #define SSM_UNIT_RESOLVE_IDS 1
+// occluder_peel.frag (far_side=second)
+#define SSM_UNIT_OCC_PEEL_FRONT 5
 // receiver_max.comp
 #define SSM_UNIT_RECEIVER_MAX_SOURCE 0
 #define SSM_UNIT_RECEIVER_MAX_LAYERS 1
@@ -37,6 +39,11 @@
 #define SSM_UNIT_SPLAT_LAYER_IDS 8
 #define SSM_UNIT_SPLAT_PLANES 9
 #define SSM_UNIT_SPLAT_OCC_DEPTH 10  // the side's linear occluder depth (merged patches)
+#define SSM_IMAGE_SPLAT_MASKS 0      // accumulate=samples: the light-sample masks
+#define SSM_SAMPLE_WORDS 8           // their 32-bit words per texel (ssm.h kSampleWords)
+// samples_resolve.comp
+#define SSM_IMAGE_RESOLVE_MASKS 0
+#define SSM_IMAGE_RESOLVE_TARGET 1
 // visibility.frag
 #define SSM_UNIT_VISIBILITY_POSITION 0
 #define SSM_UNIT_VISIBILITY_ID 1

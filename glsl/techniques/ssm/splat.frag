@@ -1,9 +1,14 @@
 #version 450 core
 // `ssm` splat: the share of the light one micro-patch hides from the receiver seen through this
-// soft-shadow-map texel. The patch is back-projected from the receiver onto the light and the
-// covered area is the product of two interval intersections (Atty et al. 3.4, 4.2); the host
-// sums the patches with additive blending, once per receiver layer.
+// soft-shadow-map texel. The patch is back-projected from the receiver onto the light. AREA:
+// the covered area is the product of two interval intersections (Atty et al. 3.4, 4.2) and the
+// host sums the patches with additive blending; overlapping back-projections count twice
+// (5.1.2). SAMPLES: the light samples inside it are ORed into the texel's mask, the union of
+// all patches of both sides (samples_resolve.comp counts them). Once per receiver layer.
 #include "techniques/ssm/bindings.glsl"
+#ifndef SAMPLES
+#define SAMPLES 0
+#endif
 // Linear receiver depth, 1 = none
 layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;
 uniform int u_layer;  // the receiver layer splatted into
@@ -26,6 +31,8 @@ flat in int v_object;
 flat in int v_children;  // micro-patches per side merged into this one (lod.comp)
 flat in ivec2 v_texel;   // its (first) occluder texel
 flat in float v_reach;   // far side: its surface's depth span beyond it (splat.vert)
+flat in vec4 v_sealed;   // its edges grown by u_seal toward its own object (splat.vert)
+uniform float u_seal;
 
 // A merged patch's micro-patches (a receiver near it in depth counts them one by one)
 layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;  // linear
@@ -39,14 +46,45 @@ layout(location = 0) out vec4 o_occlusion;
 // Receivers nearer than this many depth spans of a merged patch count its micro-patches.
 const float kNearSpans = 4.0;
 
-// The share of the light that rectangle R (x0, y0, x1, y1, light's frame at distance Z) hides
-// from the receiver P: back-projected from P onto the light (distance 0), in light units [0, 1].
-float covered(vec4 r, float z, vec3 p) {
+#if SAMPLES
+// The light's 256 samples: sample (i, j) of a 16 x 16 grid sits at ((16 i + j + 0.5) / 256,
+// (16 j + i + 0.5) / 256) of the light, so that each axis sees 256 distinct positions (a
+// penumbra along a light edge steps by 1/256, not 1/16). Word w holds rows 2w and 2w + 1.
+layout(binding = SSM_IMAGE_SPLAT_MASKS, r32ui) uniform coherent uimage2DArray u_masks;
+uint g_mask[SSM_SAMPLE_WORDS];
+
+// The samples of row J inside the sample-index box K (see addSamples) as bits 0-15: a run of
+// i, where both the x and the y conditions hold (ceilings of n / 16 by arithmetic shifts).
+uint rowRun(int j, ivec4 k) {
+    int a = max(max((k.x - j + 15) >> 4, k.y - 16 * j), 0);
+    int b = min(min((k.z - j + 15) >> 4, k.w - 16 * j), 16);
+    return a < b ? ((1u << uint(b)) - 1u) & ~((1u << uint(a)) - 1u) : 0u;
+}
+
+// Ors the samples inside U (x0, y0, x1, y1 in light units [0, 1]) into g_mask, every row in a
+// loop of constant length (no divergence, no dynamically indexed array).
+void addSamples(vec4 u) {
+    ivec4 k = ivec4(ceil(u * 256.0 - 0.5));  // sample indices 16i + j (x), 16j + i (y): [lo, hi)
+    if (k.z <= k.x || k.w <= k.y) return;
+    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w)
+        g_mask[w] |= rowRun(2 * w, k) | (rowRun(2 * w + 1, k) << 16u);
+}
+#else
+float g_sum = 0.0;  // the summed covered area
+#endif
+
+// Adds what rectangle R (x0, y0, x1, y1, light's frame at distance Z) hides from the receiver
+// P: back-projected from P onto the light (distance 0), in light units [0, 1].
+void add(vec4 r, float z, vec3 p) {
     float s = p.z / (p.z - z);
     vec4 onto = p.xyxy + (r - p.xyxy) * s;
     vec4 unit = clamp((onto + u_light_half.xyxy) / (2.0 * u_light_half.xyxy), 0.0, 1.0);
+#if SAMPLES
+    addSamples(unit);
+#else
     vec2 c = unit.zw - unit.xy;
-    return c.x * c.y;
+    g_sum += c.x * c.y;
+#endif
 }
 
 // Whether the micro-patch R at distance Z lies wholly above the tangent plane N of the
@@ -56,21 +94,23 @@ bool above(vec3 n, vec4 r, float z, vec3 p, float margin) {
     return lo.x + lo.y + n.z * z - dot(n, p) > margin;
 }
 
-// The share of the light hidden from the receiver P at texel T, a surface of the patch's own
+// Adds what is hidden from the receiver P at texel T, a surface of the patch's own
 // object, by the patch R at distance Z where its micro-patches lie wholly above P's tangent
 // plane (receiver_planes.comp) by a margin for that plane's estimate: the light they hide lies
 // above P's horizon, none of it the part the visibility pass takes in closed form. A patch
 // merged by lod.comp counts each of its v_children^2 micro-patches so, a row at a time: in a
 // row the ones above the plane are a run, as each one's lowest corner rises linearly.
-float ownObjectOcclusion(ivec2 t, vec4 r, float z, vec3 p) {
+void addOwnObject(ivec2 t, vec4 r, float z, vec3 p) {
     vec3 n = texelFetch(u_planes, ivec3(t, u_layer), 0).xyz;
-    if (n == vec3(0.0)) return 0.0;
+    if (n == vec3(0.0)) return;
     float margin = (u_depth_bias + 2.0 * max(u_ssm_texel.x, u_ssm_texel.y)) * p.z;
-    if (v_children == 1) return above(n, r, z, p, margin) ? covered(r, z, p) : 0.0;
+    if (v_children == 1) {
+        if (above(n, r, z, p, margin)) add(r, z, p);
+        return;
+    }
     int k = v_children;
     vec2 w = (r.zw - r.xy) / float(k);  // one micro-patch
     float rise = n.x * w.x;             // of the lowest corner from a column to the next
-    float sum = 0.0;
     for (int j = 0; j < k; ++j) {
         float y0 = r.y + float(j) * w.y, y1 = y0 + w.y;
         // Column 0's lowest corner over the plane, less the margin.
@@ -84,29 +124,29 @@ float ownObjectOcclusion(ivec2 t, vec4 r, float z, vec3 p) {
         else if (h <= 0.0)
             continue;
         if (first <= last)
-            sum +=
-                covered(vec4(r.x + float(first) * w.x, y0, r.x + float(last + 1) * w.x, y1), z, p);
+            add(vec4(r.x + float(first) * w.x, y0, r.x + float(last + 1) * w.x, y1), z, p);
     }
-    return sum;
 }
 
-// A merged patch's occlusion of the receiver P at texel T micro-patch by micro-patch, at their
-// own depths, as the unmerged splat counts them (OWN: P is of the patch's object).
-float microPatchesOcclusion(ivec2 t, vec3 p, bool own) {
+// Adds a merged patch's occlusion of the receiver P at texel T micro-patch by micro-patch, at
+// their own depths, as the unmerged splat counts them (OWN: P is of the patch's object).
+void addMicroPatches(ivec2 t, vec3 p, bool own) {
     vec3 n = texelFetch(u_planes, ivec3(t, u_layer), 0).xyz;
-    if (own && n == vec3(0.0)) return 0.0;
+    if (own && n == vec3(0.0)) return;
     float margin = (u_depth_bias + 2.0 * max(u_ssm_texel.x, u_ssm_texel.y)) * p.z;
-    float sum = 0.0;
     for (int j = 0; j < v_children; ++j)
         for (int i = 0; i < v_children; ++i) {
             ivec2 c = v_texel + ivec2(i, j);
             float z = u_occ_near + texelFetch(u_occ_depth, c, 0).r * u_occ_range;
             if (p.z - z <= u_depth_bias * p.z) continue;
             vec2 lo = u_occ_lo + vec2(c) * u_occ_texel;
-            vec4 r = vec4(lo, lo + u_occ_texel) * z;
-            if (!own || above(n, r, z, p, margin)) sum += covered(r, z, p);
+            // Inner edges grow as the block's grew toward its neighbours (splat.vert).
+            vec4 grow = vec4(i > 0 ? 1.0 : v_sealed.x, j > 0 ? 1.0 : v_sealed.y,
+                             i < v_children - 1 ? 1.0 : v_sealed.z,
+                             j < v_children - 1 ? 1.0 : v_sealed.w) * u_seal;
+            vec4 r = (vec4(lo, lo + u_occ_texel) + vec4(-grow.xy, grow.zw) * u_occ_texel.xyxy) * z;
+            if (!own || above(n, r, z, p, margin)) add(r, z, p);
         }
-    return sum;
 }
 
 void main() {
@@ -123,20 +163,30 @@ void main() {
     // closed form. Not where it merely lies in front of that surface at its texel: a box's top
     // face in front of its steep lit wall striped the wall (random scene rand20: 0.31).
     bool own = u_layer_count > 1 && texelFetch(u_layer_ids, ivec3(texel, u_layer), 0).r == v_object;
-    float o;
+#if SAMPLES
+    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w) g_mask[w] = 0u;
+#endif
     if (v_children > 1 &&
         zr - v_depth_near <= kNearSpans * 2.0 * (v_depth - v_depth_near) + u_depth_bias * zr) {
         // Near a merged patch in depth, within a few of its depth spans, its one depth would
         // misplace the micro-patches' back-projections, or count ones the bias drops: count
         // them one by one (at most lod.comp's largest block).
-        o = microPatchesOcclusion(texel, p, own);
+        addMicroPatches(texel, p, own);
     } else if (own) {
         if (zr - v_depth <= u_depth_bias * zr) discard;
-        o = ownObjectOcclusion(texel, v_rect * v_depth, v_depth, p);
+        addOwnObject(texel, v_rect * v_depth, v_depth, p);
     } else {
         if (zr - v_depth <= u_depth_bias * zr) discard;
-        o = covered(v_rect * v_depth, v_depth, p);
+        add(v_rect * v_depth, v_depth, p);
     }
-    if (o == 0.0) discard;
-    o_occlusion = vec4(o, 0.0, 0.0, 0.0);
+#if SAMPLES
+    // The colour writes are masked off: the masks are the output.
+    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w)
+        if (g_mask[w] != 0u)
+            imageAtomicOr(u_masks, ivec3(texel, u_layer * SSM_SAMPLE_WORDS + w), g_mask[w]);
+    o_occlusion = vec4(0.0);
+#else
+    if (g_sum == 0.0) discard;
+    o_occlusion = vec4(g_sum, 0.0, 0.0, 0.0);
+#endif
 }

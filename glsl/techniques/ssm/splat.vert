@@ -40,7 +40,8 @@ uniform float u_receiver_range;
 layout(binding = SSM_UNIT_SPLAT_OCC_IDS) uniform isampler2D u_occ_ids;
 // The side's linear occluder depth, for the far side's slope (u_far_side)
 layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;
-uniform int u_far_side;  // 1: the farthest-surface map of two_sided (empty texels 0)
+uniform int u_far_side;  // 1: the far-surface map of two_sided
+uniform float u_far_empty;  // its empty texels' depth (0 farthest, 1 second: far_side)
 uniform float u_occ_near;
 uniform float u_occ_range;
 flat out float v_reach;  // far side: the depth its texel's surface spans beyond the patch
@@ -75,9 +76,27 @@ float reach(ivec2 texel, float z) {
                                                : 0),
                         ivec2(0), last);
         float d = texelFetch(u_occ_depth, n, 0).r;
-        if (d != 0.0) most = max(most, abs(u_occ_near + d * u_occ_range - z));
+        if (d != u_far_empty) most = max(most, abs(u_occ_near + d * u_occ_range - z));
     }
     return u_far_reach * most;
+}
+
+// accumulate=samples: a patch's edges toward a neighbour texel of its own object grow by u_seal
+// texels, so that neighbours at different depths overlap on the light instead of leaving gaps
+// (the union counts an overlap once); a silhouette edge stays. 0 with accumulate=area.
+uniform float u_seal;
+flat out vec4 v_sealed;  // per edge (x0, y0, x1, y1): 1 where it grew
+
+// Whether the texel beside block [T, T + W) across edge E (0 left, 1 bottom, 2 right, 3 top),
+// at the middle of that edge, holds the object ID.
+bool sameObjectBeside(ivec2 t, int w, int e, int id) {
+    ivec2 size = textureSize(u_occ_ids, 0);
+    ivec2 n = t + (e == 0   ? ivec2(-1, w / 2)
+                   : e == 1 ? ivec2(w / 2, -1)
+                   : e == 2 ? ivec2(w, w / 2)
+                            : ivec2(w / 2, w));
+    if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, size))) return false;
+    return texelFetch(u_occ_ids, n, 0).r == id;
 }
 
 void main() {
@@ -87,6 +106,13 @@ void main() {
     float width = float(1u << (p.texel >> SSM_LEVEL_SHIFT));  // texels per side
     vec2 lo = u_occ_lo + vec2(texel) * u_occ_texel;
     vec4 rect = vec4(lo, lo + width * u_occ_texel);  // window rectangle at distance 1
+    v_sealed = vec4(0.0);
+    if (u_seal > 0.0) {
+        int id = texelFetch(u_occ_ids, texel, 0).r;
+        for (int e = 0; e < 4; ++e)
+            v_sealed[e] = sameObjectBeside(texel, int(width), e, id) ? 1.0 : 0.0;
+        rect += vec4(-v_sealed.xy, v_sealed.zw) * u_seal * u_occ_texel.xyxy;
+    }
     float z = p.z_near;  // the extent of a merged patch's nearest micro-patch
     // Penumbra rectangle on the virtual plane (3.3), in window units: the patch grown by half
     // the light times (1/z_O - 1/z_R).

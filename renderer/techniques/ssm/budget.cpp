@@ -1,8 +1,10 @@
 // What ssm allocates and the work one frame's splat may take, checked before a render: see
 // ssm.h (memoryTerms, splatLimitError).
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
+#include "glsl/techniques/ssm/bindings.glsl"
 #include "renderer/core/memory_limit.h"
 #include "renderer/techniques/ssm/ssm.h"
 
@@ -13,7 +15,13 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const int ssm = p.get(kSsmSize);
     const auto m = static_cast<u64>(p.get(kMapSize));
     const auto s = static_cast<u64>(ssm);
-    const u64 sides = p.get(kTwoSided) ? 2 : 1;
+    // accumulate=samples: one soft shadow map (every side's union) and the sample masks, and
+    // with far_side=second a third occluder map (Ssm::sideCount)
+    const bool samples = p.getEnum(kAccumulate) == Accumulate::Samples;
+    const bool second = p.getEnum(kFarSide) == FarSide::Second;
+    const u64 maps = !p.get(kTwoSided) ? 1 : samples && second ? 3 : 2;
+    const u64 soft = samples ? 4 + 4 * SSM_SAMPLE_WORDS : 4 * std::min<u64>(maps, 2);
+    const u64 sides = maps;
     const auto layers = static_cast<u64>(p.get(kLayers));
     MemoryTerms out;
     // Per occluder texel and side: depth, id, list entry; with `lod` one pyramid (16 bytes,
@@ -21,14 +29,14 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const u64 lod = p.get(kLod) > 0.0 ? 38 : 0;
     out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
                    saturatingProduct({m, m, (4 + 4 + sizeof(MicroPatch)) * sides + lod})});
-    // Per receiver layer: soft shadow maps (per side), depth and id, the farthest-receiver
-    // pyramid (4/3 of a float); plus the k-buffer's slots and the peeling's scratch depth and
-    // ids (its fallback).
+    // Per receiver layer: soft shadow maps (per side) or the sample masks, depth and id, the
+    // farthest-receiver pyramid (4/3 of a float); plus the k-buffer's slots and the peeling's
+    // scratch depth and ids (its fallback).
     const auto slots = static_cast<u64>(ReceiverLayers::kbufferSlots(static_cast<int>(layers)));
     out.push_back({"technique.layers",
                    "the soft shadow maps and receiver layers (" + squareText(ssm) + " x " +
                        std::to_string(layers) + ")",
-                   saturatingProduct({s, s, (4 * sides + 4 + 4 + 6) * layers + 4 * slots + 8})});
+                   saturatingProduct({s, s, (soft + 4 + 4 + 6) * layers + 4 * slots + 8})});
     return out;
 }
 

@@ -29,7 +29,7 @@ void Ssm::buildLod(const scene::RectLight& light, const LightWindow& occ, const 
     glBindTextureUnit(SSM_UNIT_LOD_DEPTH, map.depth.id());
     glBindTextureUnit(SSM_UNIT_LOD_IDS, map.ids.id());
     glBindTextureUnit(SSM_UNIT_LOD_PYRAMID, lod_pyramid_.id());
-    gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_empty", emptyDepth(side));
     gl::setUniform(p, "u_occ_near", occ.near);
     gl::setUniform(p, "u_occ_range", occ.far - occ.near);
     gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));

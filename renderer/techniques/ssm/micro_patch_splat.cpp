@@ -61,7 +61,7 @@ void Ssm::compact(const LightWindow& occ, int side) {
                      gpu_patches_[size_t(side)].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_RUNS, compact_runs_.id());
-    gl::setUniform(p, "u_empty", side ? 0.0f : 1.0f);
+    gl::setUniform(p, "u_empty", emptyDepth(side));
     gl::setUniform(p, "u_merged", lod_ ? 1 : 0);
     gl::setUniform(p, "u_occ_near", occ.near);
     gl::setUniform(p, "u_occ_range", occ.far - occ.near);
@@ -77,18 +77,46 @@ void Ssm::compact(const LightWindow& occ, int side) {
     glUseProgram(0);
 }
 
-// Adds every micro-patch's occlusion of side SIDE into its soft shadow map.
+void Ssm::clearSampleMasks() {
+    const GLuint zero = 0;
+    glClearTexSubImage(sample_masks_.id(), 0, 0, 0, 0, ssm_size_, ssm_size_,
+                       used_layers_ * SSM_SAMPLE_WORDS, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void Ssm::resolveSamples() {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    const auto& p = resolve_program_;
+    glUseProgram(p.id());
+    glBindImageTexture(SSM_IMAGE_RESOLVE_MASKS, sample_masks_.id(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                       GL_R32UI);
+    glBindImageTexture(SSM_IMAGE_RESOLVE_TARGET, soft_maps_[0]->occlusion.id(), 0, GL_TRUE, 0,
+                       GL_WRITE_ONLY, fp16_ ? GL_R16F : GL_R32F);
+    gl::setUniform(p, "u_size", ssm_size_);
+    const auto groups = static_cast<GLuint>((ssm_size_ + 7) / 8);
+    glDispatchCompute(groups, groups, static_cast<GLuint>(std::max(used_layers_, 1)));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+// Adds every micro-patch's occlusion of side SIDE into its soft shadow map (accumulate=area),
+// or its light samples into the texels' sample masks (accumulate=samples).
 void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
                 int side) {
-    const SoftShadowTarget& target = *soft_maps_[size_t(side)];
-    const float zero[4] = {0, 0, 0, 0};
-    for (const auto& fbo : target.fbos) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+    const SoftShadowTarget& target = *soft_maps_[samples_ ? 0 : size_t(side)];
     glViewport(0, 0, ssm_size_, ssm_size_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
+    if (samples_) {
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBindImageTexture(SSM_IMAGE_SPLAT_MASKS, sample_masks_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           GL_R32UI);
+    } else {
+        const float zero[4] = {0, 0, 0, 0};
+        for (const auto& fbo : target.fbos) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    }
     const auto& p = splat_program_;
     glUseProgram(p.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER, receiver_layers_->depth.id());
@@ -97,7 +125,8 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_DEPTH, occluder_maps_[size_t(side)]->depth.id());
     gl::setUniform(p, "u_occ_near", occ.near);
     gl::setUniform(p, "u_occ_range", occ.far - occ.near);
-    gl::setUniform(p, "u_far_side", side);
+    gl::setUniform(p, "u_far_side", side > 0 ? 1 : 0);
+    gl::setUniform(p, "u_far_empty", emptyDepth(side));
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());
     gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
@@ -109,7 +138,8 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     gl::setUniform(p, "u_receiver_far", soft.far);
     gl::setUniform(p, "u_receiver_near", soft.near);
     gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
-    gl::setParamUniforms(p, kSsmParams, params_);  // ssm_size, depth_bias, map_size
+    gl::setParamUniforms(p, kSsmParams, params_);      // ssm_size, depth_bias, map_size, seal
+    if (!samples_) gl::setUniform(p, "u_seal", 0.0f);  // the paper's sum counts overlaps twice
     gl::setUniform(p, "u_occ_lo", occ.lo);
     gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
     glBindVertexArray(empty_vao_.id());
@@ -133,6 +163,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindVertexArray(0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glDisable(GL_BLEND);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -26,7 +26,8 @@ void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
     glBindTextureUnit(SSM_UNIT_VISIBILITY_ID, ctx.gbuffer.id().id());
     glBindTextureUnit(SSM_UNIT_VISIBILITY_RECEIVES, receives_.id());
     glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM, soft_maps_[0]->occlusion.id());
-    if (two_sided_) glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM_BACK, soft_maps_[1]->occlusion.id());
+    if (softMapCount() == 2)
+        glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM_BACK, soft_maps_[1]->occlusion.id());
     glBindTextureUnit(SSM_UNIT_VISIBILITY_LAYERS, receiver_layers_->depth.id());
     ctx.gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,

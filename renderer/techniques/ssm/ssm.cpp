@@ -47,15 +47,25 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     prepareReceivers(scene);
     depth_pass_ = std::make_unique<passes::LightDepthPass>(
         "ssm depth", passes::LightDepthPass::Output::DepthAndIds);
+    if (two_sided_ && second_)
+        peel_pass_ = std::make_unique<passes::LightDepthPass>("ssm occluder peel",
+                                                              "techniques/ssm/occluder_peel.frag");
     splat_program_ =
         gl::buildProgram("ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
-                         {{"CLIP", clip_ ? "1" : "0"}});
+                         {{"CLIP", clip_ ? "1" : "0"}, {"SAMPLES", samples_ ? "1" : "0"}});
+    if (samples_) {
+        resolve_program_ =
+            gl::buildProgram("ssm samples resolve", {"techniques/ssm/samples_resolve.comp"},
+                             {{"TARGET_FORMAT", fp16_ ? "r16f" : "r32f"}});
+        sample_masks_ = gl::createTexture2DArray(GL_R32UI, ssm_size_, ssm_size_,
+                                                 layers_ * SSM_SAMPLE_WORDS, "ssm sample masks");
+    }
     if (!cpu_path_) {
         compact_program_ = gl::buildProgram("ssm compact", {"techniques/ssm/compact.comp"});
         // Room for every texel of one map per side: the list lives on the GPU only.
         const auto bytes = GLsizeiptr(sizeof(ssm::MicroPatch)) * map_size_ * map_size_;
         gpu_patches_.clear();
-        for (int side = 0; side < (two_sided_ ? 2 : 1); ++side) {
+        for (int side = 0; side < sideCount(); ++side) {
             gpu_patches_.push_back(gl::createBuffer("ssm micro-patches (gpu)"));
             glNamedBufferStorage(gpu_patches_.back().id(), bytes, nullptr, 0);
         }
@@ -71,17 +81,17 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     }
     visibility_program_ = gl::buildProgram(
         "ssm visibility", {"passes/fullscreen.vert", "techniques/ssm/visibility.frag"},
-        {{"TWO_SIDED", two_sided_ ? "1" : "0"}});
+        {{"TWO_SIDED", softMapCount() == 2 ? "1" : "0"}});
     occluder_maps_.clear();
     soft_maps_.clear();
     const GLenum format = fp16_ ? GL_R16F : GL_R32F;
-    for (int side = 0; side < (two_sided_ ? 2 : 1); ++side) {
+    for (int side = 0; side < sideCount(); ++side)
         occluder_maps_.push_back(std::make_unique<passes::LightDepthTarget>(
-            map_size_, side ? "ssm occluder map (back)" : "ssm occluder map", true));
+            map_size_, sidePass("ssm occluder map", side).c_str(), true));
+    for (int side = 0; side < softMapCount(); ++side)
         soft_maps_.push_back(std::make_unique<SoftShadowTarget>(
             ssm_size_, layers_, format,
             side ? "ssm soft shadow maps (back)" : "ssm soft shadow maps"));
-    }
     receiver_layers_ = std::make_unique<ssm::ReceiverLayers>(
         ssm_size_, layers_, ssm::ReceiverLayers::buildFor(scene.objects().size()),
         "ssm receiver layers");
@@ -106,6 +116,24 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     empty_vao_ = gl::createVertexArray("ssm splat");
 }
 
+void Ssm::renderOccluderMap(const passes::GpuScene& scene, const scene::RectLight& light,
+                            const LightWindow& occ, int side) {
+    const auto casters = passes::GpuScene::Filter::Casters;
+    if (side == 0 || !second_) {
+        occluder_maps_[size_t(side)]->render(scene, *depth_pass_, casters, light,
+                                             depthView(light, occ), side == 1);
+        return;
+    }
+    // Side 1: the nearest caster surface at least depth_bias of the farthest depth beyond the
+    // front's; side 2: the farthest beyond side 1's.
+    glUseProgram(peel_pass_->program().id());
+    gl::setUniform(peel_pass_->program(), "u_peel_gap",
+                   depth_bias_ * occ.far / (occ.far - occ.near));
+    glBindTextureUnit(SSM_UNIT_OCC_PEEL_FRONT, occluder_maps_[size_t(side - 1)]->depth.id());
+    occluder_maps_[size_t(side)]->render(scene, *peel_pass_, casters, light, depthView(light, occ),
+                                         side == 2);
+}
+
 void Ssm::render(frame::FrameContext& ctx) {
     const scene::RectLight& light = ctx.currentLight();
     passes::Bounds receiver_bounds;
@@ -115,14 +143,11 @@ void Ssm::render(frame::FrameContext& ctx) {
         ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBounds()));
     const LightWindow soft = ssm::softShadowWindow(light, occ, receiver_bounds);
     const bool shadowed = !occ.empty() && !soft.empty();
-    const int sides = two_sided_ ? 2 : 1;
+    const int sides = sideCount();
 
     if (shadowed) {
         ctx.pass("ssm_occluder_map", [&] {
-            for (int side = 0; side < sides; ++side)
-                occluder_maps_[size_t(side)]->render(ctx.gpu, *depth_pass_,
-                                                     passes::GpuScene::Filter::Casters, light,
-                                                     depthView(light, occ), side == 1);
+            for (int side = 0; side < sides; ++side) renderOccluderMap(ctx.gpu, light, occ, side);
         });
         ctx.pass("ssm_receiver_map", [&] {
             // Layers at least depth_bias of the farthest receiver's depth apart.
@@ -138,21 +163,22 @@ void Ssm::render(frame::FrameContext& ctx) {
         glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero);
         for (int side = 0; side < sides; ++side) {
             if (lod_)
-                ctx.pass(side ? "ssm_lod[back]" : "ssm_lod",
-                         [&] { buildLod(light, occ, soft, side); });
-            if (!cpu_path_)
-                ctx.pass(side ? "ssm_compact[back]" : "ssm_compact", [&] { compact(occ, side); });
+                ctx.pass(sidePass("ssm_lod", side), [&] { buildLod(light, occ, soft, side); });
+            if (!cpu_path_) ctx.pass(sidePass("ssm_compact", side), [&] { compact(occ, side); });
             if (cpu_path_)
-                ctx.pass(side ? "ssm_readback[back]" : "ssm_readback", [&] {
-                    ssm::readMicroPatches(patchSource(side), lod_, map_size_, occ,
-                                          side ? 0.0f : 1.0f, scratch_, patches_);
+                ctx.pass(sidePass("ssm_readback", side), [&] {
+                    ssm::readMicroPatches(patchSource(side), lod_, map_size_, occ, emptyDepth(side),
+                                          scratch_, patches_);
                     patches_buffer_.upload(std::span<const ssm::MicroPatch>(patches_),
                                            GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                                            sizeof(ssm::MicroPatch));
                 });
-            ctx.pass(side ? "ssm_splat[back]" : "ssm_splat",
-                     [&] { splat(light, occ, soft, side); });
+            ctx.pass(sidePass("ssm_splat", side), [&] {
+                if (samples_ && side == 0) clearSampleMasks();
+                splat(light, occ, soft, side);
+            });
         }
+        if (samples_) ctx.pass("ssm_samples_resolve", [&] { resolveSamples(); });
     }
     ctx.pass("ssm_visibility", [&] { visibility(ctx, light, soft, shadowed); });
 

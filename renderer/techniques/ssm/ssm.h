@@ -26,8 +26,12 @@ using passes::LightWindow;
 
 enum class Precision { Fp32, Fp16 };
 enum class PatchPath { Gpu, Cpu };
+enum class Accumulate { Samples, Area };
+enum class FarSide { Second, Farthest };
 inline constexpr EnumKey<Precision, 2> kPrecision{"precision", {"fp32", "fp16"}};
 inline constexpr EnumKey<PatchPath, 2> kPath{"path", {"gpu", "cpu"}};
+inline constexpr EnumKey<Accumulate, 2> kAccumulate{"accumulate", {"samples", "area"}};
+inline constexpr EnumKey<FarSide, 2> kFarSide{"far_side", {"second", "farthest"}};
 
 inline constexpr IntKey kSsmSize{"ssm_size"};
 inline constexpr BoolKey kTwoSided{"two_sided"};
@@ -36,6 +40,7 @@ inline constexpr IntKey kLayers{"layers"};
 inline constexpr FloatKey kLod{"lod"};
 inline constexpr FloatKey kLodDepth{"lod_depth"};
 inline constexpr FloatKey kFarReach{"far_reach"};
+inline constexpr FloatKey kSeal{"seal"};
 
 inline constexpr std::array kSsmParams = {
     intParam(kMapSize, 256, 16, 4096, "occluder map width and height in texels")
@@ -46,9 +51,17 @@ inline constexpr std::array kSsmParams = {
         .limitedBy(GlLimit::MaxTextureSize),
     enumParam(kPrecision, Precision::Fp32,
               "soft-shadow-map blending precision (fp16 reproduces the paper's Appendix A)"),
-    boolParam(kTwoSided, true,
-              "also splat the farthest (back) occluder surfaces into a second map, merged by max")
+    boolParam(kTwoSided, true, "also splat the far occluder surfaces (far_side) from a second map")
         .define(),
+    floatParam(kSeal, 0.25, 0.0, 2.0,
+               "accumulate=samples: grow each micro-patch by this many texels toward its own "
+               "object's neighbours, so that their back-projections overlap instead of leaving "
+               "gaps (the union counts an overlap once); 0: off")
+        .uniform(),
+    enumParam(kFarSide, FarSide::Second,
+              "two_sided's far surfaces: second, each texel's nearest caster surface beyond the "
+              "front one by depth_bias (a box's hidden walls, not the caster floor beneath it); "
+              "farthest, the paper's (3.5)"),
     enumParam(kPath, PatchPath::Gpu,
               "gpu: micro-patch list compacted on the GPU, drawn indirect; cpu: read back (4.1)"),
     boolParam(kClip, true,
@@ -73,6 +86,10 @@ inline constexpr std::array kSsmParams = {
                "merged micro-patches' depths span at most this fraction of their distance from "
                "the light")
         .uniform(),
+    enumParam(kAccumulate, Accumulate::Samples,
+              "samples: each texel keeps which of 256 light samples some micro-patch hides (the "
+              "union, both sides in one mask); area: the paper's sum of back-projected areas "
+              "(3.4), overlapping patches counted twice (5.1.2)"),
 };
 
 // `lod` merges blocks of at most 2^kMaxLodLevel micro-patches a side: splat.frag counts a
@@ -105,7 +122,9 @@ public:
           clip_(p.get(kClip)),
           depth_bias_(static_cast<float>(p.get(kDepthBias))),
           layers_(p.get(kLayers)),
-          lod_(p.get(kLod) > 0.0) {}
+          lod_(p.get(kLod) > 0.0),
+          samples_(p.getEnum(kAccumulate) == Accumulate::Samples),
+          second_(p.getEnum(kFarSide) == FarSide::Second) {}
 
     // The receivers: with one layer (the paper) the role-receiver objects only.
     bool receives(scene::ShadowRole role) const {
@@ -157,6 +176,28 @@ private:
     void splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
                int side);
 
+    // Soft shadow maps kept: one per side with accumulate=area and two_sided, else one (a
+    // sample mask takes both sides' union).
+    // The depth side SIDE's occluder map is cleared to: 1 (nearest-first depth test), 0 for the
+    // farthest surfaces (greater test).
+    float emptyDepth(int side) const { return side == 2 || (side == 1 && !second_) ? 0.0f : 1.0f; }
+    // Occluder maps: the front; two_sided's far side (far_side); with far_side=second and
+    // accumulate=samples a third, the farthest surface beyond the second (a lower plate under
+    // two upper ones), which the union may add where the sum would count it twice.
+    int sideCount() const { return !two_sided_ ? 1 : second_ && samples_ ? 3 : 2; }
+    static std::string sidePass(const char* name, int side) {
+        return std::string(name) + (side == 1 ? "[back]" : side == 2 ? "[far]" : "");
+    }
+    // Side SIDE's occluder map: the front surfaces, two_sided's far ones (far_side), or the
+    // farthest beyond the second.
+    void renderOccluderMap(const passes::GpuScene& scene, const scene::RectLight& light,
+                           const LightWindow& occ, int side);
+    int softMapCount() const { return two_sided_ && !samples_ ? 2 : 1; }
+    // accumulate=samples: clears the sample masks of the used receiver layers.
+    void clearSampleMasks();
+    // accumulate=samples: each texel's occlusion from its sample mask (samples_resolve.comp).
+    void resolveSamples();
+
     // Projects the soft shadow map(s) onto the receivers: visibility and the occlusion channel.
     void visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                     const LightWindow& soft, bool shadowed);
@@ -167,6 +208,11 @@ private:
     float depth_bias_;  // also the peeling's gap (host)
     int layers_;
     bool lod_;
+    bool samples_;                                       // accumulate=samples
+    bool second_;                                        // far_side=second
+    std::unique_ptr<passes::LightDepthPass> peel_pass_;  // far_side=second's
+    gl::Texture sample_masks_;  // R32UI array: SSM_SAMPLE_WORDS layers per receiver layer
+    gl::Program resolve_program_;
     int used_layers_ = 0;      // receiver layers holding a receiver (this light)
     int receiver_passes_ = 0;  // geometry passes that built them
     std::unique_ptr<passes::LightDepthPass> depth_pass_;
