@@ -1,6 +1,5 @@
 // What ssm allocates and the work one frame's splat may take, checked before a render: see
 // ssm.h (memoryTerms, splatLimitError).
-#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -15,13 +14,13 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const int ssm = p.get(kSsmSize);
     const auto m = static_cast<u64>(p.get(kMapSize));
     const auto s = static_cast<u64>(ssm);
-    // accumulate=samples: one soft shadow map (every side's union) and the sample masks, and
-    // with far_side=second a third occluder map (Ssm::sideCount)
+    const bool two_sided = p.get(kTwoSided);
     const bool samples = p.getEnum(kAccumulate) == Accumulate::Samples;
-    const bool second = p.getEnum(kFarSide) == FarSide::Second;
-    const u64 maps = !p.get(kTwoSided) ? 1 : samples && second ? 3 : 2;
-    const u64 soft = samples ? 4 + 4 * SSM_SAMPLE_WORDS : 4 * std::min<u64>(maps, 2);
-    const u64 sides = maps;
+    const auto sides = static_cast<u64>(
+        occluderMapCount(two_sided, samples, p.getEnum(kFarSide) == FarSide::Second));
+    // Per receiver layer and texel: the soft shadow maps, and with accumulate=samples the masks
+    const u64 soft = 4 * static_cast<u64>(softMapCount(two_sided, samples)) +
+                     (samples ? 4 * SSM_SAMPLE_WORDS : 0);
     const auto layers = static_cast<u64>(p.get(kLayers));
     MemoryTerms out;
     // Per occluder texel and side: depth, id, list entry; with `lod` one pyramid (16 bytes,

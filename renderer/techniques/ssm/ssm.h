@@ -100,6 +100,18 @@ inline constexpr int kMaxLodLevel = 3;
 // map_size x ssm_size exceeds this (the default 256 x 256 is 2^16).
 inline constexpr std::uint64_t kMaxSplatProduct = std::uint64_t{1} << 21;
 
+// Occluder maps a frame renders: the front; two_sided's far side (far_side); with
+// far_side=second and accumulate=samples a third, the farthest surface beyond the second (a
+// lower plate under two upper ones), which the union may add where the sum would count it twice.
+inline int occluderMapCount(bool two_sided, bool samples, bool second) {
+    return !two_sided ? 1 : second && samples ? 3 : 2;
+}
+// Soft shadow maps kept: one per side with accumulate=area and two_sided, else one (a sample
+// mask takes every side's union).
+inline int softMapCount(bool two_sided, bool samples) {
+    return two_sided && !samples ? 2 : 1;
+}
+
 // ssm's largest allocations for the memory budget, and the bound above as a message ("" when
 // within it): budget.cpp.
 MemoryTerms memoryTerms(const Params& p, std::uint64_t pixels);
@@ -176,15 +188,10 @@ private:
     void splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
                int side);
 
-    // Soft shadow maps kept: one per side with accumulate=area and two_sided, else one (a
-    // sample mask takes both sides' union).
     // The depth side SIDE's occluder map is cleared to: 1 (nearest-first depth test), 0 for the
     // farthest surfaces (greater test).
     float emptyDepth(int side) const { return side == 2 || (side == 1 && !second_) ? 0.0f : 1.0f; }
-    // Occluder maps: the front; two_sided's far side (far_side); with far_side=second and
-    // accumulate=samples a third, the farthest surface beyond the second (a lower plate under
-    // two upper ones), which the union may add where the sum would count it twice.
-    int sideCount() const { return !two_sided_ ? 1 : second_ && samples_ ? 3 : 2; }
+    int sideCount() const { return occluderMapCount(two_sided_, samples_, second_); }
     static std::string sidePass(const char* name, int side) {
         return std::string(name) + (side == 1 ? "[back]" : side == 2 ? "[far]" : "");
     }
@@ -192,7 +199,7 @@ private:
     // farthest beyond the second.
     void renderOccluderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                            const LightWindow& occ, int side);
-    int softMapCount() const { return two_sided_ && !samples_ ? 2 : 1; }
+    int softMapCount() const { return ssm::softMapCount(two_sided_, samples_); }
     // accumulate=samples: clears the sample masks of the used receiver layers.
     void clearSampleMasks();
     // accumulate=samples: each texel's occlusion from its sample mask (samples_resolve.comp).
