@@ -95,12 +95,12 @@ TEST(DepthRangesGL, HsmLevelsAreExact) {
     checkStructures(Accel::Hsm, 64, 64, 0);
 }
 
-// 7 layers: layer 0, then pairs 1-2, 3-4, 5-6.
+// 6 layers (no whole-map layer): layer 0, then pairs 1-2, 3-4, then 5 alone.
 TEST(DepthRangesGL, MssmLayersAreExact) {
     checkStructures(Accel::Mssm, 64, 64, 0);
 }
 
-// YSM parts skip layer 0: 5 layers (pairs 1-2, 3-4), 6 layers (1-2, 3-4, then 5 alone), and
+// YSM parts skip layer 0: 4 layers (pair 1-2, then 3 alone), 5 layers (pairs 1-2, 3-4), and
 // the YSM as large as the map (its MSSM part built from HSM level 0).
 TEST(DepthRangesGL, YsmLayersAreExact) {
     checkStructures(Accel::Ysm, 64, 16, 1);

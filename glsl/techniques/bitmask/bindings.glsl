@@ -28,8 +28,9 @@
 // Image units of hsm.comp, mssm.comp and microrects.comp.
 #define BITMASK_IMAGE_HSM_FINER 0
 #define BITMASK_IMAGE_HSM_COARSER 1
-#define BITMASK_IMAGE_MSSM_HSM_LEVEL 0
-#define BITMASK_IMAGE_MSSM 1
+#define BITMASK_IMAGE_MSSM_BELOW 0  // the layer below (or the HSM level), one 2D layer
+#define BITMASK_IMAGE_MSSM 1        // the layer written
+#define BITMASK_IMAGE_MSSM_NEXT 2   // the layer above it, in a pair
 #define BITMASK_IMAGE_MICRORECTS_HSM0 0
 #define BITMASK_IMAGE_MICRORECTS_EXTENT_IN 1
 #define BITMASK_IMAGE_MICRORECTS_DEPTH_IN 2

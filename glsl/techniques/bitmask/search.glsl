@@ -140,10 +140,11 @@ vec2 hsmRange(ivec4 r, int k) {
 
 #if ACCEL != 0
 // The range over the inclusive texel range R of MSSM layer 0: four (overlapping) power-of-two
-// neighbourhoods that cover it exactly along its longer axis.
+// neighbourhoods that cover it exactly. The top layer built is log2(size) - 1: an extent of the
+// whole map, 2^log2(size), is two neighbourhoods of that layer (depth_ranges.cpp).
 vec2 mssmRange(ivec4 r) {
     int extent = max(r.z - r.x, r.w - r.y) + 1;
-    int k = findMSB(extent);
+    int k = min(findMSB(extent), textureSize(u_mssm, 0).z - 1);
     ivec2 hi = max(r.zw - ((1 << k) - 1), r.xy);
     return combine4(texelFetch(u_mssm, ivec3(r.xy, k), 0).rg,
                     texelFetch(u_mssm, ivec3(hi.x, r.y, k), 0).rg,

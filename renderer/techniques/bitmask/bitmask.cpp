@@ -47,7 +47,7 @@ Bitmask::Bitmask(const Params& p)
     if (accel_ == Accel::Mssm && map_size_ > 2048)
         throw InputError(
             "technique.map_size: at most 2048 with accel \"mssm\" (one RG32F map_size^2 "
-            "layer per level: 384 MB at 2048); use \"ysm\"");
+            "layer per level: 352 MB at 2048); use \"ysm\"");
     bitmask::sampleGrid(bits_);  // validates technique.bits
     if (microquads_ && !use_bitmask_)
         throw InputError("technique.occluders: microquad needs visibility \"bitmask\"");

@@ -39,7 +39,9 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
     ysm_ = accel == Accel::Ysm;
     mssm_base_ = accel == Accel::Ysm ? std::max(0, log2Of(map_size_ / ysm_size)) : 0;
     const int size = map_size_ >> mssm_base_;
-    mssm_layers_ = log2Of(size) + 1;
+    // Layers 0 .. log2(size) - 1: an extent of the whole part is two neighbourhoods of the
+    // layer below the whole-map one (search.glsl, mssmRange), which is never built.
+    mssm_layers_ = std::max(1, log2Of(size));
     mssm_ = gl::createTexture2DArray(GL_RG32F, size, size, mssm_layers_,
                                      accel == Accel::Ysm ? "bitmask ysm" : "bitmask mssm");
     mssm_program_ = gl::buildProgram("bitmask mssm", {"techniques/bitmask/mssm.comp"});
@@ -76,15 +78,22 @@ void DepthRanges::buildMssm() {
     if (mssm_layers_ == 0) return;
     const int size = map_size_ >> mssm_base_;
     glUseProgram(mssm_program_.id());
-    glBindImageTexture(BITMASK_IMAGE_MSSM_HSM_LEVEL, hsm_.id(), mssm_base_, GL_FALSE, 0,
-                       GL_READ_ONLY, GL_RG32F);
-    glBindImageTexture(BITMASK_IMAGE_MSSM, mssm_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
-    // The YSM never queries layer 0 (depth_ranges.h): layer 1 is built from the HSM level.
-    gl::setUniform(mssm_program_, "u_from_hsm", ysm_ ? 1 : 0);
     const GLuint groups = groupsFor(size);
+    // Layer 0 alone (a copy; the YSM never queries it, depth_ranges.h, so its layer 1 reads the
+    // HSM level); above it, two layers per dispatch where two are left. Each layer is bound as
+    // a 2D image of its own (mssm.comp).
     for (int layer = ysm_ ? 1 : 0; layer < mssm_layers_;) {
-        // Layer 0 alone (a copy); above it, two layers per dispatch where two are left.
         const bool pair = layer > 0 && layer + 1 < mssm_layers_;
+        if (layer <= 1 && (layer == 0 || ysm_))
+            glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, hsm_.id(), mssm_base_, GL_FALSE, 0,
+                               GL_READ_ONLY, GL_RG32F);
+        else
+            glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, mssm_.id(), 0, GL_FALSE, layer - 1,
+                               GL_READ_ONLY, GL_RG32F);
+        glBindImageTexture(BITMASK_IMAGE_MSSM, mssm_.id(), 0, GL_FALSE, layer, GL_WRITE_ONLY,
+                           GL_RG32F);
+        glBindImageTexture(BITMASK_IMAGE_MSSM_NEXT, mssm_.id(), 0, GL_FALSE,
+                           pair ? layer + 1 : layer, GL_WRITE_ONLY, GL_RG32F);
         gl::setUniform(mssm_program_, "u_layer", layer);
         gl::setUniform(mssm_program_, "u_pair", pair ? 1 : 0);
         glDispatchCompute(groups, groups, 1);
