@@ -26,7 +26,8 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { GpuLight u_lig
 layout(binding = UNIT_SHADE_VISIBILITY) uniform sampler2DArray u_visibility;
 uniform int u_light_count;
 // The layer holding the environment's irradiance per pixel (rgb: shadowed, a: unshadowed
-// luminance; written by `exact`), or -1.
+// luminance; written by `exact`, or folded from the environment's lights, environment_fold.frag),
+// or -1.
 uniform int u_env_layer = -1;
 
 const float kPi = 3.14159265358979;
@@ -48,6 +49,14 @@ float beautyVisibility(vec4 vis, GpuLight l, vec3 pos, vec3 n, bool casts) {
     return share > 0.0 ? clamp(vis.r / share, 0.0, 1.0) : 0.0;
 }
 
+// Light L's irradiance at POS (unit normal N; plane G and CASTS for the horizon rule) with its
+// visibility layer VIS: rgb = L's radiance x E x B (shadowed), a = its luminance x E.
+vec4 lightIrradiance(GpuLight l, vec4 vis, vec3 pos, vec3 n, vec3 g, bool casts) {
+    vec3 c[4] = vec3[4](l.corners[0].xyz, l.corners[1].xyz, l.corners[2].xyz, l.corners[3].xyz);
+    float e = rectLightIrradiance(c, l.forward.xyz, pos, n);
+    return vec4(l.radiance.rgb * e * beautyVisibility(vis, l, pos, g, casts), l.radiance.w * e);
+}
+
 // Radiance leaving POS (unit normal N, linear ALBEDO) lit by every light, with the visibility
 // layers of pixel VIS_PIX (fully visible where VIS_PIX.x < 0); VISIBILITY gets the
 // irradiance-weighted visibility (the plain mean where no light reaches the point unshadowed).
@@ -58,15 +67,13 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float 
     vec3 radiance = vec3(0.0);
     float num = 0.0, den = 0.0, plain = 0.0;
     for (int i = 0; i < u_light_count; ++i) {
-        GpuLight l = u_lights[i];
-        vec3 c[4] = vec3[4](l.corners[0].xyz, l.corners[1].xyz, l.corners[2].xyz, l.corners[3].xyz);
-        float e = rectLightIrradiance(c, l.forward.xyz, pos, n);
         vec4 layer = vis_pix.x < 0 ? vec4(1.0, 1.0, 1.0, 1.0)
                                    : texelFetch(u_visibility, ivec3(vis_pix, i), 0);
+        vec4 term = lightIrradiance(u_lights[i], layer, pos, n, g, casts);
         float v = layer.r;
-        radiance += albedo / kPi * l.radiance.rgb * e * beautyVisibility(layer, l, pos, g, casts);
-        num += l.radiance.w * e * v;
-        den += l.radiance.w * e;
+        radiance += albedo / kPi * term.rgb;
+        num += term.a * v;
+        den += term.a;
         plain += v;
     }
     int terms = u_light_count;

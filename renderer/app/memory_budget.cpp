@@ -33,7 +33,7 @@ std::vector<MemoryTerm> estimateMemory(const scene::Scene& s,
     // channels each.
     out.push_back({"image.width", "the G-buffer position texture", product({pixels, 16}), true});
     out.push_back({"image.width", "the G-buffer and shading targets", product({pixels, 40 + 20})});
-    out.push_back({"image.width", "the visibility layers of " + std::to_string(lights) + " lights",
+    out.push_back({"image.width", "the " + std::to_string(lights) + " visibility layers",
                    product({pixels, lights, 16}), true});
     out.push_back({"image.width", "the diagnostic layers", product({pixels, lights, 16})});
     const u64 in_flight = static_cast<u64>(std::max(frames_in_flight, 1));

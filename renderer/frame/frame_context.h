@@ -39,6 +39,7 @@ public:
     // The lights rendered: the scene's own, then those the technique made of its environment.
     std::span<const scene::RectLight> lights;
     int light = -1;  // index into lights being rendered; -1 in the frame's own passes
+    int layer = -1;  // its output layer where that is not LIGHT (a folded environment light)
     const scene::RectLight& currentLight() const { return lights[static_cast<size_t>(light)]; }
     // Whether the current light stands for part of the environment map.
     bool environmentLight() const { return light >= static_cast<int>(scene.lights.size()); }
@@ -50,9 +51,12 @@ public:
     // gets "@<light>" appended.
     void pass(const std::string& name, const std::function<void()>& fn);
     // Binds this light's output layers and returns their framebuffer (see OutputTargets::bind).
-    GLuint bindOutput() { return targets_.bind(light); }
+    GLuint bindOutput() { return targets_.bind(outputLayer()); }
     // Replaces this light's visibility layer (see OutputTargets::uploadVisibility).
-    void uploadVisibility(std::span<const float> rgba) { targets_.uploadVisibility(light, rgba); }
+    void uploadVisibility(std::span<const float> rgba) {
+        targets_.uploadVisibility(outputLayer(), rgba);
+    }
+    int outputLayer() const { return layer >= 0 ? layer : light; }
     // Shows STATUS (e.g. a CPU pass's share done and ETA) on the progress line, if any.
     void progress(const std::string& status) {
         if (timer_.on_begin) timer_.on_begin(status);

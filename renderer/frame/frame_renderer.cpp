@@ -1,6 +1,7 @@
 // Frame rendering: see frame_renderer.h.
 #include "renderer/frame/frame_renderer.h"
 
+#include "renderer/core/error.h"
 #include "renderer/frame/frame_image.h"
 #include "renderer/gl/debug.h"
 
@@ -32,11 +33,21 @@ void FrameRenderer::setParams(const Params& params) {
     const int before = lights_;
     environment_ = {};
     if (first_.environment && info_.environment) environment_ = info_.environment(params_, first_);
-    lights_ = static_cast<int>(first_.lights.size() + environment_.lights.size()) +
-              (environment_.irradiance_layer ? 1 : 0);
+    const int scene_lights = static_cast<int>(first_.lights.size());
+    const int env_lights = static_cast<int>(environment_.lights.size());
+    const bool fold = environment_.fold && env_lights > 0;
+    lights_ = scene_lights + env_lights + (environment_.irradiance_layer && !fold ? 1 : 0);
+    // Folded: the scene's lights, the environment light being rendered, the irradiance sum.
+    const int layers_before = layers_;
+    layers_ = fold ? scene_lights + 2 : lights_;
     auto diagnostics = technique_->diagnostics();
-    if (!targets_ || diagnostics.size() != diagnostics_.size() || lights_ != before)
-        targets_ = std::make_unique<OutputTargets>(width_, height_, lights_,
+    if (fold && !diagnostics.empty())
+        throw RuntimeError(std::string(info_.name) + ": a folded environment has no diagnostics");
+    if (fold && !fold_)
+        fold_ = std::make_unique<passes::EnvironmentFold>(width_, height_, gpu_.casterFlags());
+    if (!targets_ || diagnostics.size() != diagnostics_.size() || lights_ != before ||
+        layers_ != layers_before)
+        targets_ = std::make_unique<OutputTargets>(width_, height_, layers_,
                                                    static_cast<int>(diagnostics.size()));
     diagnostics_ = std::move(diagnostics);
     technique_->prepare(gl_, gpu_);
@@ -55,17 +66,31 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
     // Multisampling (section 7): the techniques see only the one-sample G-buffer above and
     // compute one visibility per pixel; the samples meet them in the shade pass.
     if (sample_gbuffer_) ctx.pass("gbuffer_msaa", [&] { sample_gbuffer_->render(gpu_, camera); });
+    const int scene_lights = static_cast<int>(s.lights.size());
+    const bool fold = fold_ && environment_.fold && !environment_.lights.empty();
+    if (fold) fold_->begin(all_lights_);
     for (int l = 0; l < lights_; ++l) {
         ctx.light = l;
+        // A folded environment light: its layer (after the scene's), then added to the sum.
+        ctx.layer = fold && l >= scene_lights ? scene_lights : -1;
         technique_->render(ctx);
+        if (ctx.layer >= 0)
+            ctx.pass("environment_fold",
+                     [&] { fold_->add(gbuffer_, targets_->visibility(), ctx.layer, l); });
     }
     ctx.light = -1;
-    const int env_layer = environment_.irradiance_layer ? lights_ - 1 : -1;
+    ctx.layer = -1;
+    if (fold)
+        ctx.pass("environment_fold_end", [&] { fold_->end(targets_->visibility(), layers_ - 1); });
+    const int env_layer = environment_.irradiance_layer || fold ? layers_ - 1 : -1;
+    // Folded lights are in the environment's layer, not shaded again.
+    shade_lights_.assign(all_lights_.begin(),
+                         fold ? all_lights_.begin() + scene_lights : all_lights_.end());
     ctx.pass("shade",
-             [&] { shade_.render(gbuffer_, targets_->visibility(), all_lights_, env_layer); });
+             [&] { shade_.render(gbuffer_, targets_->visibility(), shade_lights_, env_layer); });
     if (sample_gbuffer_) {
         ctx.pass("shade_msaa", [&] {
-            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), all_lights_,
+            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), shade_lights_,
                                  env_layer);
         });
         // The pixels shaded per sample: where a sample shows another surface than the pixel.
@@ -77,7 +102,7 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
 }
 
 FrameReadback FrameRenderer::startReadback() {
-    FrameReadback r = startFrameReadback(*readback_, gbuffer_, shade_, *targets_, lights_,
+    FrameReadback r = startFrameReadback(*readback_, gbuffer_, shade_, *targets_, layers_,
                                          static_cast<int>(first_.lights.size()),
                                          std::string(info_.name), diagnostics_);
     gl::checkErrors("readback");

@@ -17,6 +17,7 @@
 #include "renderer/gl/context.h"
 #include "renderer/gl/pass_timer.h"
 #include "renderer/output/image.h"
+#include "renderer/passes/environment_fold.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/gpu_scene.h"
 #include "renderer/passes/sample_gbuffer.h"
@@ -44,7 +45,8 @@ public:
     int samples() const { return sample_gbuffer_ ? sample_gbuffer_->samples() : 1; }
     // How samples that differ from their pixel's representative find their visibility.
     void setSampleGuide(passes::SampleGuide guide) { shade_.setSampleGuide(guide); }
-    // Lights rendered per frame: the scene's and those made of its environment.
+    // Lights rendered per frame: the scene's and those made of its environment (with a fold,
+    // more than the output layers).
     int lightCount() const { return lights_; }
     const Params& params() const { return params_; }
     const TechniqueInfo& technique() const { return info_; }
@@ -54,13 +56,16 @@ private:
     const TechniqueInfo& info_;
     Params params_;
     int width_, height_, lights_;  // lights_: the scene's and the environment's
+    int layers_ = 0;               // output layers (fewer than lights_ + 1 with a fold)
     const scene::Scene& first_;
     EnvironmentLights environment_;
     std::vector<scene::RectLight> all_lights_;
+    std::vector<scene::RectLight> shade_lights_;  // those the shade pass shades one by one
     passes::GpuScene gpu_;
     passes::GBuffer gbuffer_;
     std::unique_ptr<passes::SampleGBuffer> sample_gbuffer_;  // image.samples > 1 only
     passes::Shade shade_;
+    std::unique_ptr<passes::EnvironmentFold> fold_;  // environment_.fold only
     std::unique_ptr<Technique> technique_;
     std::vector<DiagnosticChannel> diagnostics_;
     std::unique_ptr<OutputTargets> targets_;

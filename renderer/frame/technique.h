@@ -42,9 +42,13 @@ public:
 // Lights a technique makes of the scene's environment map, rendered after the scene's own; or,
 // with irradiance_layer, one more output layer after them that the technique fills per pixel
 // with the environment's shadowed irradiance (rgb) and unshadowed luminance irradiance (a).
+// With fold, the lights are rendered one at a time into one layer, each folded by the frame
+// into such an irradiance layer (passes/environment_fold.h): two layers for any number of
+// lights, for a technique without diagnostics.
 struct EnvironmentLights {
     std::vector<scene::RectLight> lights;
     bool irradiance_layer = false;
+    bool fold = false;
     nlohmann::json stats = nlohmann::json::object();  // e.g. lights fitted, energy captured
 };
 
@@ -62,9 +66,9 @@ struct TechniqueInfo {
     // A bound the parameter table's ranges cannot say (e.g. a product of two keys): the message
     // "technique.<key>: ..." when PARAMS exceed it, else "". nullptr: none.
     std::string (*limit_error)(const Params&) = nullptr;
-    // The most lights environment() makes for PARAMS, an irradiance layer counted as one: each
-    // is a visibility and a diagnostic layer of the frame, which the memory budget counts before
-    // anything is allocated (512 sampled directions at 1024 x 768 are 6.4 GB). nullptr: none.
+    // The most output layers environment() needs for PARAMS (a light each, an irradiance layer
+    // one; folded lights two in all): each is a visibility and a diagnostic layer of the frame,
+    // which the memory budget counts before anything is allocated. nullptr: none.
     int (*environment_lights_max)(const Params&) = nullptr;
 };
 

@@ -22,6 +22,9 @@ public:
         upload(std::as_bytes(data), target, binding, min_capacity);
     }
 
+    // The buffer, to bind again after other passes used its binding.
+    GLuint id() const { return buffer_.id(); }
+
 private:
     std::string label_;
     Buffer buffer_;

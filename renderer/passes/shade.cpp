@@ -45,7 +45,7 @@ Shade::Shade(int width, int height, int samples, const gl::Buffer& caster_flags)
         throw RuntimeError("shade: framebuffer incomplete");
 }
 
-void Shade::uploadLights(const std::vector<scene::RectLight>& lights) {
+void uploadGpuLights(gl::DynamicBuffer& buffer, const std::vector<scene::RectLight>& lights) {
     std::vector<GpuLight> data;
     for (const auto& l : lights) {
         GpuLight g;
@@ -56,12 +56,12 @@ void Shade::uploadLights(const std::vector<scene::RectLight>& lights) {
         g.radiance = glm::vec4(r, 0.2126f * r.x + 0.7152f * r.y + 0.0722f * r.z);
         data.push_back(g);
     }
-    lights_.upload(std::span<const GpuLight>(data), GL_SHADER_STORAGE_BUFFER, kBindingLights);
+    buffer.upload(std::span<const GpuLight>(data), GL_SHADER_STORAGE_BUFFER, kBindingLights);
 }
 
 void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
                    const std::vector<scene::RectLight>& lights, int env_layer) {
-    uploadLights(lights);
+    uploadGpuLights(lights_, lights);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -87,7 +87,7 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     if (samples.samples() != samples_)
         throw RuntimeError("shade: built for " + std::to_string(samples_) + " samples, given " +
                            std::to_string(samples.samples()));
-    uploadLights(lights);
+    uploadGpuLights(lights_, lights);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);

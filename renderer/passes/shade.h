@@ -23,6 +23,10 @@ enum class SampleGuide {
     Nearest,  // its own pixel's (a baseline to measure the depth guidance against)
 };
 
+// Uploads LIGHTS into BUFFER as glsl/passes/shading.glsl's GpuLight array, bound at its
+// binding.
+void uploadGpuLights(gl::DynamicBuffer& buffer, const std::vector<scene::RectLight>& lights);
+
 class Shade {
 public:
     // SAMPLES > 1 also builds the multisampled programs (renderSamples()).
@@ -46,8 +50,6 @@ public:
     const gl::Texture& visibility() const { return visibility_; }  // R32F
 
 private:
-    void uploadLights(const std::vector<scene::RectLight>& lights);
-
     int width_, height_, samples_;
     const gl::Buffer& caster_flags_;
     SampleGuide guide_ = SampleGuide::Depth;

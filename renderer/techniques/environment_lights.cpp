@@ -94,6 +94,7 @@ EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& 
     for (const auto& face : faces.energy)
         for (const auto& e : face) cdf.push_back(total += scene::luminance(e));
     EnvironmentLights out;
+    out.fold = true;  // hundreds of lights: two output layers, not one each
     out.stats["env_samples"] = count;
     if (!(total > 0)) return out;
     const std::uint32_t seed = static_cast<std::uint32_t>(p.get(kSeed));
@@ -129,8 +130,9 @@ int fittedEnvironmentLightsMax(const Params& p) {
     return p.get(kEnvLights);
 }
 
-int sampledEnvironmentLightsMax(const Params& p) {
-    return p.get(kEnvSamples) + 1;  // and, where a technique asks for it, an irradiance layer
+int sampledEnvironmentLightsMax(const Params&) {
+    // Folded: the light being rendered, the irradiance layer, and the fold's sum (one more).
+    return 3;
 }
 
 }  // namespace penumbra::techniques

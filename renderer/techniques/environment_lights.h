@@ -48,7 +48,8 @@ scene::RectLight farLight(const scene::Scene& s, const scene::FittedLight& light
 // env_face_size, or reads them from env_lights_file (the first env_lights of them).
 EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s);
 // `reference`: P's env_samples directions drawn by luminance energy from the cube faces (stratified
-// in the energy's cumulative distribution), each a small light carrying an equal share.
+// in the energy's cumulative distribution), each a small light carrying an equal share; folded
+// one at a time into the environment's irradiance layer (EnvironmentLights::fold).
 EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& s);
 // The most lights each makes (TechniqueInfo::environment_lights_max).
 int fittedEnvironmentLightsMax(const Params& p);
