@@ -1,6 +1,8 @@
 // Frame rendering: see frame_renderer.h.
 #include "renderer/frame/frame_renderer.h"
 
+#include <algorithm>
+
 #include "renderer/core/error.h"
 #include "renderer/frame/frame_image.h"
 #include "renderer/gl/debug.h"
@@ -37,9 +39,10 @@ void FrameRenderer::setParams(const Params& params) {
     const int env_lights = static_cast<int>(environment_.lights.size());
     const bool fold = environment_.fold && env_lights > 0;
     lights_ = scene_lights + env_lights + (environment_.irradiance_layer && !fold ? 1 : 0);
-    // Folded: the scene's lights, the environment light being rendered, the irradiance sum.
+    // Folded: the scene's lights, a batch of environment lights, the irradiance sum.
     const int layers_before = layers_;
-    layers_ = fold ? scene_lights + 2 : lights_;
+    layers_ =
+        fold ? scene_lights + std::min(env_lights, passes::EnvironmentFold::kBatch) + 1 : lights_;
     auto diagnostics = technique_->diagnostics();
     if (fold && !diagnostics.empty())
         throw RuntimeError(std::string(info_.name) + ": a folded environment has no diagnostics");
@@ -69,14 +72,21 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
     const int scene_lights = static_cast<int>(s.lights.size());
     const bool fold = fold_ && environment_.fold && !environment_.lights.empty();
     if (fold) fold_->begin(all_lights_);
+    const int batch = passes::EnvironmentFold::kBatch;
     for (int l = 0; l < lights_; ++l) {
         ctx.light = l;
-        // A folded environment light: its layer (after the scene's), then added to the sum.
-        ctx.layer = fold && l >= scene_lights ? scene_lights : -1;
+        // A folded environment light: a layer of the batch (after the scene's); a full batch,
+        // or the last, is added to the sum.
+        const int e = l - scene_lights;
+        ctx.layer = fold && e >= 0 ? scene_lights + e % batch : -1;
         technique_->render(ctx);
-        if (ctx.layer >= 0)
-            ctx.pass("environment_fold",
-                     [&] { fold_->add(gbuffer_, targets_->visibility(), ctx.layer, l); });
+        if (ctx.layer >= 0 && (e % batch == batch - 1 || l == lights_ - 1)) {
+            const int first = e - e % batch;
+            ctx.pass("environment_fold", [&] {
+                fold_->add(gbuffer_, targets_->visibility(), scene_lights, scene_lights + first,
+                           e % batch + 1);
+            });
+        }
     }
     ctx.light = -1;
     ctx.layer = -1;

@@ -42,9 +42,9 @@ public:
 // Lights a technique makes of the scene's environment map, rendered after the scene's own; or,
 // with irradiance_layer, one more output layer after them that the technique fills per pixel
 // with the environment's shadowed irradiance (rgb) and unshadowed luminance irradiance (a).
-// With fold, the lights are rendered one at a time into one layer, each folded by the frame
-// into such an irradiance layer (passes/environment_fold.h): two layers for any number of
-// lights, for a technique without diagnostics.
+// With fold, the lights are rendered a batch at a time into a batch of layers, each batch folded
+// by the frame into such an irradiance layer (passes/environment_fold.h): a few layers for any
+// number of lights, for a technique without diagnostics.
 struct EnvironmentLights {
     std::vector<scene::RectLight> lights;
     bool irradiance_layer = false;

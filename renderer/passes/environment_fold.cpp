@@ -26,7 +26,7 @@ void EnvironmentFold::begin(const std::vector<scene::RectLight>& lights) {
 }
 
 void EnvironmentFold::add(const GBuffer& gbuffer, const gl::Texture& visibility_layers, int layer,
-                          int light) {
+                          int light, int count) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -43,6 +43,7 @@ void EnvironmentFold::add(const GBuffer& gbuffer, const gl::Texture& visibility_
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
     gl::setUniform(program_, "u_light", light);
     gl::setUniform(program_, "u_layer", layer);
+    gl::setUniform(program_, "u_count", count);
     fullscreen_.draw();
     glDisable(GL_BLEND);
     glUseProgram(0);

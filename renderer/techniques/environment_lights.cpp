@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "renderer/core/error.h"
+#include "renderer/passes/environment_fold.h"
 #include "renderer/scene/json_file.h"
 #include "renderer/techniques/jitter_hash.h"
 
@@ -94,7 +95,7 @@ EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& 
     for (const auto& face : faces.energy)
         for (const auto& e : face) cdf.push_back(total += scene::luminance(e));
     EnvironmentLights out;
-    out.fold = true;  // hundreds of lights: two output layers, not one each
+    out.fold = true;  // hundreds of lights: a batch of output layers, not one each
     out.stats["env_samples"] = count;
     if (!(total > 0)) return out;
     const std::uint32_t seed = static_cast<std::uint32_t>(p.get(kSeed));
@@ -130,9 +131,9 @@ int fittedEnvironmentLightsMax(const Params& p) {
     return p.get(kEnvLights);
 }
 
-int sampledEnvironmentLightsMax(const Params&) {
-    // Folded: the light being rendered, the irradiance layer, and the fold's sum (one more).
-    return 3;
+int sampledEnvironmentLightsMax(const Params& p) {
+    // Folded: a batch of lights, the irradiance layer, and the fold's sum (one more).
+    return std::min(p.get(kEnvSamples), passes::EnvironmentFold::kBatch) + 2;
 }
 
 }  // namespace penumbra::techniques
