@@ -46,7 +46,10 @@ void FrameRenderer::setParams(const Params& params) {
     auto diagnostics = technique_->diagnostics();
     if (fold && !diagnostics.empty())
         throw RuntimeError(std::string(info_.name) + ": a folded environment has no diagnostics");
-    if (fold && !fold_)
+    // fold_ exists exactly while these parameters fold (render() asks only it).
+    if (!fold)
+        fold_.reset();
+    else if (!fold_)
         fold_ = std::make_unique<passes::EnvironmentFold>(width_, height_, gpu_.casterFlags());
     if (!targets_ || diagnostics.size() != diagnostics_.size() || lights_ != before ||
         layers_ != layers_before)
@@ -70,7 +73,7 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
     // compute one visibility per pixel; the samples meet them in the shade pass.
     if (sample_gbuffer_) ctx.pass("gbuffer_msaa", [&] { sample_gbuffer_->render(gpu_, camera); });
     const int scene_lights = static_cast<int>(s.lights.size());
-    const bool fold = fold_ && environment_.fold && !environment_.lights.empty();
+    const bool fold = fold_ != nullptr;
     if (fold) fold_->begin(all_lights_);
     const int batch = passes::EnvironmentFold::kBatch;
     for (int l = 0; l < lights_; ++l) {
@@ -93,14 +96,12 @@ nlohmann::json FrameRenderer::render(const scene::Scene& s, gl::PassTimer& timer
     if (fold)
         ctx.pass("environment_fold_end", [&] { fold_->end(targets_->visibility(), layers_ - 1); });
     const int env_layer = environment_.irradiance_layer || fold ? layers_ - 1 : -1;
-    // Folded lights are in the environment's layer, not shaded again.
-    shade_lights_.assign(all_lights_.begin(),
-                         fold ? all_lights_.begin() + scene_lights : all_lights_.end());
-    ctx.pass("shade",
-             [&] { shade_.render(gbuffer_, targets_->visibility(), shade_lights_, env_layer); });
+    // Folded lights are in the environment's layer, not shaded again: only the scene's.
+    const std::vector<scene::RectLight>& shaded = fold ? s.lights : all_lights_;
+    ctx.pass("shade", [&] { shade_.render(gbuffer_, targets_->visibility(), shaded, env_layer); });
     if (sample_gbuffer_) {
         ctx.pass("shade_msaa", [&] {
-            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), shade_lights_,
+            shade_.renderSamples(gbuffer_, *sample_gbuffer_, targets_->visibility(), shaded,
                                  env_layer);
         });
         // The pixels shaded per sample: where a sample shows another surface than the pixel.

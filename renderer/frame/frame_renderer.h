@@ -60,12 +60,11 @@ private:
     const scene::Scene& first_;
     EnvironmentLights environment_;
     std::vector<scene::RectLight> all_lights_;
-    std::vector<scene::RectLight> shade_lights_;  // those the shade pass shades one by one
     passes::GpuScene gpu_;
     passes::GBuffer gbuffer_;
     std::unique_ptr<passes::SampleGBuffer> sample_gbuffer_;  // image.samples > 1 only
     passes::Shade shade_;
-    std::unique_ptr<passes::EnvironmentFold> fold_;  // environment_.fold only
+    std::unique_ptr<passes::EnvironmentFold> fold_;  // while the environment's lights fold
     std::unique_ptr<Technique> technique_;
     std::vector<DiagnosticChannel> diagnostics_;
     std::unique_ptr<OutputTargets> targets_;

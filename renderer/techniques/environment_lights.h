@@ -49,7 +49,7 @@ scene::RectLight farLight(const scene::Scene& s, const scene::FittedLight& light
 EnvironmentLights fittedEnvironmentLights(const Params& p, const scene::Scene& s);
 // `reference`: P's env_samples directions drawn by luminance energy from the cube faces (stratified
 // in the energy's cumulative distribution), each a small light carrying an equal share; folded
-// one at a time into the environment's irradiance layer (EnvironmentLights::fold).
+// a batch at a time into the environment's irradiance layer (EnvironmentLights::fold).
 EnvironmentLights sampledEnvironmentLights(const Params& p, const scene::Scene& s);
 // The most lights each makes (TechniqueInfo::environment_lights_max).
 int fittedEnvironmentLightsMax(const Params& p);

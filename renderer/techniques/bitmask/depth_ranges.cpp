@@ -84,7 +84,8 @@ void DepthRanges::buildMssm() {
     // a 2D image of its own (mssm.comp).
     for (int layer = ysm_ ? 1 : 0; layer < mssm_layers_;) {
         const bool pair = layer > 0 && layer + 1 < mssm_layers_;
-        if (layer <= 1 && (layer == 0 || ysm_))
+        const bool from_hsm = ysm_ ? layer == 1 : layer == 0;
+        if (from_hsm)
             glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, hsm_.id(), mssm_base_, GL_FALSE, 0,
                                GL_READ_ONLY, GL_RG32F);
         else
@@ -92,6 +93,7 @@ void DepthRanges::buildMssm() {
                                GL_READ_ONLY, GL_RG32F);
         glBindImageTexture(BITMASK_IMAGE_MSSM, mssm_.id(), 0, GL_FALSE, layer, GL_WRITE_ONLY,
                            GL_RG32F);
+        // Without a pair the shader never writes it: bound to the same layer.
         glBindImageTexture(BITMASK_IMAGE_MSSM_NEXT, mssm_.id(), 0, GL_FALSE,
                            pair ? layer + 1 : layer, GL_WRITE_ONLY, GL_RG32F);
         gl::setUniform(mssm_program_, "u_layer", layer);
