@@ -47,9 +47,11 @@ const std::vector<Run> kRuns = {
      "back-projections once; 0.0614 (duck_resting) with the paper's sum of areas (Atty et al. "
      "5.1.2), 0.0904 one-sided; the target is 0.07 on receivers, so 0.04 is that measurement "
      "with a margin of 15 %, to catch a regression to the sum"},
-    {"bitmask", R"({"name": "bitmask"})", 0.070,
-     "measured 0.0614 (duck_resting: coarse micro-occluders at budget 12, and the duck's lower "
-     "body that the light's centre does not see); target 0.05"},
+    {"bitmask", R"({"name": "bitmask"})", 0.055,
+     "measured 0.0499 (duck_resting: coarse micro-occluders at budget 12) with the far layer, "
+     "0.0614 with the map's layer alone (the duck's lower body, which the light's centre does "
+     "not see); the target 0.05 is met without a margin, so 0.055 is the measurement with one "
+     "of 10 %, which a return to one layer fails"},
     {"css", R"({"name": "css"})", 0.090,
      "measured 0.0786 (duck_resting: the head's shadow on the body, which one depth map and "
      "one blocker depth per kernel cannot hold; spheres_three_sizes was 0.0998 before "

@@ -3,16 +3,27 @@
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
 // (BITMASK 1, four half-plane table lookups in a buffer) or adds its area (BITMASK 0). GAP_FILL 1
 // extends a micro-occluder towards a farther neighbour of its level so their projections leave no
-// gap. MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
+// gap. LAYERS 2 back-projects the far layer's micropatches too (depth peeling, as Bavoil et al.
+// 2008 add to back-projection): what the light's edges see under a caster's silhouette, which
+// the map from its centre does not hold. MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
 // the extent and depth come from their own mip chains (section 5.2), with the same extension.
 // On a receiver that also casts, the light's part below its tangent plane counts as hidden
 // (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
 // area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
 #include "techniques/bitmask/bindings.glsl"
+#if LAYERS == 2
+// The far layer's (min, max) pyramid: its micropatches at level 0 (and all levels without
+// microrects)
+layout(binding = BITMASK_UNIT_VISIBILITY_FAR) uniform sampler2D u_far;
+#endif
 #if MICRORECTS
 // Level-0 texels x0, y0, x1, y1
 layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_extent;
 layout(binding = BITMASK_UNIT_VISIBILITY_RECT_DEPTH) uniform sampler2D u_rect_depth;
+#if LAYERS == 2
+layout(binding = BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT) uniform sampler2D u_far_rect_extent;
+layout(binding = BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH) uniform sampler2D u_far_rect_depth;
+#endif
 #endif
 #if BITMASK
 // Mask i of x >= u at 2 i (words 0-3), 2 i + 1 (words 4-7); y >= v after them
@@ -71,13 +82,18 @@ float litVisibility(vec3 horizon) {
 #endif
 }
 
-#if MICROQUADS
-#include "techniques/bitmask/microquads.glsl"
+// The distance of micro-occluder (X, Y) of LEVEL of depth layer LAYER (0 the map, 1 the far
+// layer): its microrect's or its micropatch's (level 0 has no microrect texels: there they are
+// the micropatches, the pyramid's level 0).
+float occluderDepth(int layer, ivec2 xy, int level) {
+#if LAYERS == 2
+    if (layer == 1) {
+#if MICRORECTS
+        if (level > 0) return texelFetch(u_far_rect_depth, xy, level).r;
 #endif
-
-// The distance of micro-occluder (X, Y) of LEVEL: its microrect's or its micropatch's (level 0
-// has no microrect texels: there they are the micropatches, the HSM's level 0).
-float occluderDepth(ivec2 xy, int level) {
+        return texelFetch(u_far, xy, level).r;
+    }
+#endif
 #if MICRORECTS
     if (level > 0) return texelFetch(u_rect_depth, xy, level).r;
 #endif
@@ -90,11 +106,17 @@ int maskIndex(float u) {
 }
 #endif
 
-// The window rectangle (lo, hi) of micro-occluder (X, Y) of LEVEL, whose texel is T wide.
-vec4 occluderWindow(int x, int y, int level, vec2 t) {
+// The window rectangle (lo, hi) of micro-occluder (X, Y) of LEVEL of LAYER, whose texel is T
+// wide.
+vec4 occluderWindow(int layer, int x, int y, int level, vec2 t) {
 #if MICRORECTS
     if (level > 0) {
+#if LAYERS == 2
+        vec4 e = layer == 1 ? texelFetch(u_far_rect_extent, ivec2(x, y), level)
+                            : texelFetch(u_rect_extent, ivec2(x, y), level);
+#else
         vec4 e = texelFetch(u_rect_extent, ivec2(x, y), level);
+#endif
         return vec4(u_win_lo + e.xy * u_texel, u_win_lo + (e.zw + 1.0) * u_texel);
     }
 #endif
@@ -109,37 +131,34 @@ bool maskFull(uvec4 m0, uvec4 m1) {
 }
 #endif
 
-// Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
-// plane HORIZON); returns visibility, COUNT = micro-occluders back-projected. A row's depths
-// slide along it (each texel read once; GAP_FILL reads its left and right neighbours from
-// there), and with a bitmask the rows stop once every light sample is occluded.
-float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
-#if MICROQUADS
-    return backprojectQuads(p, horizon, pz, area, level, count);
-#endif
-    count = 0;
+// What the micro-occluders back-projected so far hide of the light: a bitmask (BITMASK 1) or
+// their summed area.
+struct Coverage {
+    uvec4 m0, m1;    // bit k of the 256 samples: word k / 32, words 0-3 in m0
+    float occluded;  // BITMASK 0
+};
+
+// Back-projects the micro-occluders of LEVEL of LAYER in the texel range R (levelRange()) for
+// receiver P (biased depth PZ) into C; COUNT += those back-projected. A row's depths slide along
+// it (each texel read once; GAP_FILL reads its left and right neighbours from there), and with a
+// bitmask the rows stop once every light sample is occluded; returns whether they did.
+bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Coverage c,
+                      inout int count) {
     int n = u_map_size >> level;
-    ivec4 r = levelRange(area, level, 1);
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
-#if BITMASK
-    uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
-    addBelowHorizon(horizon, m0, m1);
-#else
-    float occluded = 0.0;
-#endif
     for (int y = r.y; y <= r.w; ++y) {
-        float zl = r.x > 0 ? occluderDepth(ivec2(r.x - 1, y), level) : pz;
-        float zo = occluderDepth(ivec2(r.x, y), level);
+        float zl = r.x > 0 ? occluderDepth(layer, ivec2(r.x - 1, y), level) : pz;
+        float zo = occluderDepth(layer, ivec2(r.x, y), level);
         for (int x = r.x; x <= r.z; ++x) {
-            float zr = x < n - 1 ? occluderDepth(ivec2(x + 1, y), level) : pz;
+            float zr = x < n - 1 ? occluderDepth(layer, ivec2(x + 1, y), level) : pz;
             if (zo < pz) {
                 ++count;
-                vec4 w = occluderWindow(x, y, level, t);
+                vec4 w = occluderWindow(layer, x, y, level, t);
                 vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
                 vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
 #if GAP_FILL
-                float zd = y > 0 ? occluderDepth(ivec2(x, y - 1), level) : pz;
-                float zu = y < n - 1 ? occluderDepth(ivec2(x, y + 1), level) : pz;
+                float zd = y > 0 ? occluderDepth(layer, ivec2(x, y - 1), level) : pz;
+                float zu = y < n - 1 ? occluderDepth(layer, ivec2(x, y + 1), level) : pz;
                 if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
                 if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
                 if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
@@ -152,10 +171,11 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
                     int x0 = 2 * maskIndex(uv0.x), x1 = 2 * maskIndex(uv1.x);
                     int y0 = 2 * (maskIndex(uv0.y) + u_mask_resolution + 1);
                     int y1 = 2 * (maskIndex(uv1.y) + u_mask_resolution + 1);
-                    m0 |= b_masks[x0] & ~b_masks[x1] & b_masks[y0] & ~b_masks[y1];
-                    m1 |= b_masks[x0 + 1] & ~b_masks[x1 + 1] & b_masks[y0 + 1] & ~b_masks[y1 + 1];
+                    c.m0 |= b_masks[x0] & ~b_masks[x1] & b_masks[y0] & ~b_masks[y1];
+                    c.m1 |= b_masks[x0 + 1] & ~b_masks[x1 + 1] & b_masks[y0 + 1] &
+                            ~b_masks[y1 + 1];
 #else
-                    occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
+                    c.occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
 #endif
                 }
             }
@@ -163,12 +183,37 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
             zo = zr;
         }
 #if BITMASK
-        if (maskFull(m0, m1)) break;
+        if (maskFull(c.m0, c.m1)) return true;
 #endif
     }
+    return false;
+}
+
+#if MICROQUADS
+#include "techniques/bitmask/microquads.glsl"
+#endif
+
+// Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
+// plane HORIZON): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
+// far layer's micropatches (microrects with microrects) of the same texels, unless the map's already hide the whole light;
+// returns visibility, COUNT = micro-occluders back-projected.
+float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
+    count = 0;
+    Coverage c = Coverage(uvec4(0u), uvec4(0u), 0.0);
 #if BITMASK
-    return maskVisibility(m0, m1);
+    addBelowHorizon(horizon, c.m0, c.m1);
+#endif
+#if MICROQUADS
+    bool full = addQuads(p, pz, area, level, c.m0, c.m1, count);
 #else
-    return horizonArea(horizon.x, horizon.y, horizon.z) * (1.0 - min(occluded, 1.0));
+    bool full = backprojectLayer(0, p, pz, levelRange(area, level, 1), level, c, count);
+#endif
+#if LAYERS == 2
+    if (!full) backprojectLayer(1, p, pz, levelRange(area, level, 1), level, c, count);
+#endif
+#if BITMASK
+    return maskVisibility(c.m0, c.m1);
+#else
+    return horizonArea(horizon.x, horizon.y, horizon.z) * (1.0 - min(c.occluded, 1.0));
 #endif
 }

@@ -20,11 +20,17 @@
 #define BITMASK_UNIT_VISIBILITY_RECT_DEPTH 10
 #define BITMASK_UNIT_VISIBILITY_EDGES 11
 #define BITMASK_UNIT_VISIBILITY_SAMPLES 13
+#define BITMASK_UNIT_VISIBILITY_FAR 14  // layers 2: the far layer's min/max pyramid
+#define BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT 6  // and its microrects
+#define BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH 16  // 15 is UNIT_GEOMETRIC_NORMAL
 #define BITMASK_BINDING_VISIBILITY_STATS 3  // SSBO of the statistics counters
 #define BITMASK_BINDING_VISIBILITY_MASKS 4  // SSBO of the half-plane masks
 // loq_smooth.frag
 #define BITMASK_UNIT_SMOOTH_LOQ 0
 #define BITMASK_UNIT_SMOOTH_NORMAL 1
+// peel.frag: the front map's distances (HSM level 0); not 0, where the scene's draw binds a
+// material's base colour texture (UNIT_BASE_TEXTURE)
+#define BITMASK_UNIT_PEEL_FRONT 1
 // Image units of hsm.comp, mssm.comp and microrects.comp.
 #define BITMASK_IMAGE_HSM_FINER 0
 #define BITMASK_IMAGE_HSM_COARSER 1

@@ -2,7 +2,7 @@
 // at their HSM depths, form a quad; projected from the receiver onto the light it is two
 // triangles whose masks are ANDs of three edge-table entries (the samples left of each edge).
 // A quad counts when all four corners lie in front of the receiver. Needs search.glsl and
-// backproject.glsl's onLight(), maskVisibility() and addBelowHorizon().
+// backproject.glsl's onLight() and maskFull().
 #include "techniques/bitmask/bindings.glsl"
 // (offset bin, 2 * angle bin + word half)
 layout(binding = BITMASK_UNIT_VISIBILITY_EDGES) uniform usampler2D u_edges;
@@ -44,13 +44,12 @@ void addTriangle(vec2 a, vec2 b, vec2 c, inout uvec4 m0, inout uvec4 m1) {
 }
 
 // Back-projects the microquads of LEVEL whose first corner lies in AREA for receiver P
-// (tangent plane HORIZON); returns visibility.
-float backprojectQuads(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
+// (biased depth PZ) into M0, M1; COUNT += those back-projected; returns whether every light
+// sample is occluded then.
+bool addQuads(vec3 p, float pz, vec4 area, int level, inout uvec4 m0, inout uvec4 m1,
+              inout int count) {
     ivec4 r = levelRange(area, level, 2);
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
-    uvec4 m0 = uvec4(0u), m1 = uvec4(0u);
-    addBelowHorizon(horizon, m0, m1);
-    count = 0;
     for (int y = r.y; y <= r.w; ++y)
         for (int x = r.x; x <= r.z; ++x) {
             vec4 z = vec4(texelFetch(u_hsm, ivec2(x, y), level).r,
@@ -67,5 +66,5 @@ float backprojectQuads(vec3 p, vec3 horizon, float pz, vec4 area, int level, out
             addTriangle(q[0], q[1], q[2], m0, m1);
             addTriangle(q[0], q[2], q[3], m0, m1);
         }
-    return maskVisibility(m0, m1);
+    return maskFull(m0, m1);
 }

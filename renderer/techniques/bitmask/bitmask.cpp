@@ -35,6 +35,7 @@ Bitmask::Bitmask(const Params& p)
       bits_(p.get(kBits)),
       pattern_(p.getEnum(bitmask::kPattern)),
       seed_(static_cast<std::uint32_t>(p.get(kSeed))),
+      far_layer_(p.get(kLayers) == 2),
       budget_(p.get(kBudget)),
       budget_map_file_(p.get(kBudgetMap)),
       smooth_(p.get(kSmooth)) {
@@ -51,6 +52,11 @@ Bitmask::Bitmask(const Params& p)
     bitmask::sampleGrid(bits_);  // validates technique.bits
     if (microquads_ && !use_bitmask_)
         throw InputError("technique.occluders: microquad needs visibility \"bitmask\"");
+    // Summed areas would count the far layer's back-projections again behind the front's.
+    if (far_layer_ && !use_bitmask_)
+        throw InputError(
+            "technique.layers: 2 (the default) needs visibility \"bitmask\"; with \"area\" "
+            "set layers 1");
     if (budget_ == 1) throw InputError("technique.budget: must be 0 (unlimited) or >= 2");
     // An unlimited budget uses level 0 everywhere: nothing to smooth or blend (Table 2).
     if (budget_ == 0) smooth_ = false;
@@ -74,7 +80,7 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     const int ids = static_cast<int>(roles.size() / 2);
     receives_ = gl::createTexture2D(GL_RG8, ids, 1, "bitmask object roles");
     glTextureSubImage2D(receives_.id(), 0, 0, 0, ids, 1, GL_RG, GL_UNSIGNED_BYTE, roles.data());
-    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_);
+    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_, far_layer_);
     if (use_bitmask_) {
         const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
         masks_ = bitmask::halfPlaneBuffer(points);
@@ -82,6 +88,7 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         if (microquads_) edges_ = bitmask::edgeTexture(points);
     }
     if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
+    if (microrects_ && far_layer_) far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
     if (budget_map_) budget_texture_ = bitmask::uploadBudgetMap(*budget_map_);
     // ACCEL and GAP_FILL from the table; the rest follow from several parameters.
     gl::Defines defines = gl::paramDefines(kBitmaskParams, params_);
@@ -111,11 +118,16 @@ void Bitmask::render(frame::FrameContext& ctx) {
     if (shadowed) {
         ctx.pass("bitmask_shadow_map",
                  [&] { ranges_->renderMap(ctx.gpu, light, window.viewProj(light)); });
+        if (far_layer_)
+            ctx.pass("bitmask_far_layer",
+                     [&] { ranges_->renderFarLayer(ctx.gpu, light, window.viewProj(light)); });
         ctx.pass("bitmask_hsm", [&] { ranges_->buildHsm(); });
         if (accel_ != Accel::Hsm)
             ctx.pass(accel_ == Accel::Ysm ? "bitmask_ysm" : "bitmask_mssm",
                      [&] { ranges_->buildMssm(); });
         if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
+        if (far_rects_)
+            ctx.pass("bitmask_far_microrects", [&] { far_rects_->build(ranges_->farLayer()); });
     }
     ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
     if (smooth_) ctx.pass("bitmask_smooth", [&] { smoothLoq(ctx); });
@@ -140,9 +152,14 @@ const TechniqueInfo kBitmaskTechnique = {
     [](const Params& p, std::uint64_t) {
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         const auto ysm = static_cast<std::uint64_t>(p.get(bitmask::kYsmSize));
-        return MemoryTerms{{"technique.map_size", "the light depth map and its depth ranges",
-                            saturatingProduct({m, m, 4 + 11 + 11})},
-                           {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};
+        MemoryTerms terms{{"technique.map_size", "the light depth map and its depth ranges",
+                           saturatingProduct({m, m, 4 + 11 + 11})},
+                          {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};
+        // Its pyramid (RG32F mips) and, with microrects, theirs (RGBA32F and R32F, levels 1..).
+        if (p.get(bitmask::kLayers) == 2)
+            terms.push_back({"technique.layers", "the far layer's depth ranges and microrects",
+                             saturatingProduct({m, m, 11 + 7})});
+        return terms;
     }};
 
 }  // namespace penumbra::techniques

@@ -36,6 +36,7 @@ inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "a
 inline constexpr IntKey kYsmSize{"ysm_size"};
 inline constexpr IntKey kBits{"bits"};
 inline constexpr BoolKey kGapFill{"gap_fill"};
+inline constexpr IntKey kLayers{"layers"};
 inline constexpr IntKey kBudget{"budget"};
 inline constexpr BoolKey kBudgetFalloff{"budget_falloff"};
 inline constexpr IntKey kBudgetEdge{"budget_edge"};
@@ -65,10 +66,16 @@ inline constexpr std::array kBitmaskParams = {
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jittered or random pattern"),
     boolParam(kGapFill, true, "extend micropatches towards farther neighbours (no light leaks)")
         .define(),
-    intParam(kBudget, 12, 0, 64,
-             "b_mo: at most b_mo x b_mo micro-occluders per pixel at the chosen level (0 = "
-             "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
-             "also back-projects the finer floor level")
+    intParam(kLayers, 2, 1, 2,
+             "depth layers back-projected: 1, the casters' surface the light's centre sees (the "
+             "paper); 2, also the nearest surface behind it (depth peeling), which the light's "
+             "edges see under a caster's silhouette (bitmask only)")
+        .define(),
+    intParam(
+        kBudget, 12, 0, 64,
+        "b_mo: at most b_mo x b_mo micro-occluders per pixel and layer at the chosen level (0 = "
+        "unlimited: level 0 up to 64 texels per axis, coarser beyond; else >= 2); blending "
+        "also back-projects the finer floor level")
         .uniform(),
     boolParam(kBudgetFalloff, false,
               "budget map: b_mo falls from `budget` at the centre to `budget_edge` at corners")
@@ -141,6 +148,7 @@ private:
     int bits_;
     Pattern pattern_;
     std::uint32_t seed_;
+    bool far_layer_;  // layers 2
     int budget_;
     std::string budget_map_file_;
     std::optional<BudgetMap> budget_map_;  // read by readInputs()
@@ -148,6 +156,7 @@ private:
     std::unique_ptr<DepthRanges> ranges_;
     std::unique_ptr<LoqTargets> targets_;
     std::unique_ptr<MicroRects> rects_;
+    std::unique_ptr<MicroRects> far_rects_;  // layers 2 with microrects
     gl::Texture receives_, samples_, edges_, budget_texture_;
     gl::Buffer masks_;  // the half-plane tables
     gl::Program classify_, smooth_program_, visibility_;

@@ -17,23 +17,56 @@ int log2Of(int n) {
 GLuint groupsFor(int size) {
     return static_cast<GLuint>((size + 7) / 8);
 }
+
+// A (min, max) distance pyramid of LEVELS levels, SIZE^2 at level 0.
+gl::Texture createPyramid(int size, int levels, const char* label) {
+    gl::Texture t = gl::createTexture(GL_TEXTURE_2D, label);
+    glTextureStorage2D(t.id(), levels, GL_RG32F, size, size);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+// A framebuffer drawing into level 0 of PYRAMID, depth-tested against DEPTH.
+gl::Framebuffer pyramidTarget(const gl::Texture& pyramid, const gl::Texture& depth,
+                              const char* label) {
+    gl::Framebuffer fbo = gl::createFramebuffer(label);
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, pyramid.id(), 0);
+    glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+    passes::checkFramebuffer(fbo, label);
+    return fbo;
+}
+
+// Clears FBO's distances to kEmpty and its depth to the far plane, ready to draw.
+void beginDistanceDraw(const gl::Framebuffer& fbo, int size) {
+    passes::beginDepthMapDraw(fbo.id(), size);
+    const float empty[4] = {DepthRanges::kEmpty, DepthRanges::kEmpty, 0.0f, 0.0f}, far = 1.0f;
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, empty);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
+}
+
+void endDistanceDraw() {
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 }  // namespace
 
-DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
+DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer)
     : map_size_(map_size),
       levels_(log2Of(map_size) + 1),
       depth_pass_("bitmask light depth", passes::LightDepthPass::Output::Distance) {
-    hsm_ = gl::createTexture(GL_TEXTURE_2D, "bitmask hsm");
-    glTextureStorage2D(hsm_.id(), levels_, GL_RG32F, map_size_, map_size_);
-    glTextureParameteri(hsm_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-    glTextureParameteri(hsm_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(hsm_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(hsm_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    hsm_ = createPyramid(map_size_, levels_, "bitmask hsm");
     depth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, map_size_, map_size_, "bitmask map depth");
-    fbo_ = gl::createFramebuffer("bitmask light depth map");
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, hsm_.id(), 0);
-    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    passes::checkFramebuffer(fbo_, "bitmask light depth map");
+    fbo_ = pyramidTarget(hsm_, depth_, "bitmask light depth map");
+    if (far_layer) {
+        far_ = createPyramid(map_size_, levels_, "bitmask far layer");
+        far_fbo_ = pyramidTarget(far_, depth_, "bitmask far layer map");
+        peel_pass_ = std::make_unique<passes::LightDepthPass>("bitmask far layer peel",
+                                                              "techniques/bitmask/peel.frag");
+    }
     hsm_program_ = gl::buildProgram("bitmask hsm", {"techniques/bitmask/hsm.comp"});
     if (accel == Accel::Hsm) return;
     ysm_ = accel == Accel::Ysm;
@@ -49,27 +82,36 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size)
 
 void DepthRanges::renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                             const glm::mat4& view_proj) {
-    passes::beginDepthMapDraw(fbo_.id(), map_size_);
-    const float empty[4] = {kEmpty, kEmpty, 0.0f, 0.0f}, far = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    beginDistanceDraw(fbo_, map_size_);
     depth_pass_.draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj});
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    endDistanceDraw();
+}
+
+void DepthRanges::renderFarLayer(const passes::GpuScene& scene, const scene::RectLight& light,
+                                 const glm::mat4& view_proj) {
+    beginDistanceDraw(far_fbo_, map_size_);
+    glUseProgram(peel_pass_->program().id());
+    gl::setUniform(peel_pass_->program(), "u_peel_gap", kPeelGap);
+    glBindTextureUnit(BITMASK_UNIT_PEEL_FRONT, hsm_.id());
+    // Near 0 and range 1: the pass's depth is the distance itself, as peel.frag compares it.
+    peel_pass_->draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj, 0.0f, 1.0f});
+    endDistanceDraw();
 }
 
 void DepthRanges::buildHsm() {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     glUseProgram(hsm_program_.id());
-    for (int level = 1; level < levels_; ++level) {
-        glBindImageTexture(BITMASK_IMAGE_HSM_FINER, hsm_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY,
-                           GL_RG32F);
-        glBindImageTexture(BITMASK_IMAGE_HSM_COARSER, hsm_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY,
-                           GL_RG32F);
-        const GLuint groups = groupsFor(map_size_ >> level);
-        glDispatchCompute(groups, groups, 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    for (const gl::Texture* pyramid : {&hsm_, &far_}) {
+        if (!*pyramid) continue;
+        for (int level = 1; level < levels_; ++level) {
+            glBindImageTexture(BITMASK_IMAGE_HSM_FINER, pyramid->id(), level - 1, GL_FALSE, 0,
+                               GL_READ_ONLY, GL_RG32F);
+            glBindImageTexture(BITMASK_IMAGE_HSM_COARSER, pyramid->id(), level, GL_FALSE, 0,
+                               GL_WRITE_ONLY, GL_RG32F);
+            const GLuint groups = groupsFor(map_size_ >> level);
+            glDispatchCompute(groups, groups, 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        }
     }
     glUseProgram(0);
 }

@@ -1,8 +1,11 @@
 // `bitmask`'s light depth map and its acceleration structures (Schwarz & Stamminger, 3 and 6):
 // the HSM, a min/max mip pyramid of distances from the light's plane; the MSSM, per texel the
 // depth range of every power-of-two neighbourhood; the YSM, an MSSM built from a coarser HSM
-// level. All are built on the GPU by compute shaders.
+// level. All are built on the GPU by compute shaders. With a far layer, also the nearest
+// caster surface behind the map's (depth peeling) and its own min/max pyramid.
 #pragma once
+
+#include <memory>
 
 #include <glm/glm.hpp>
 
@@ -17,14 +20,19 @@ enum class Accel { Hsm, Mssm, Ysm };
 
 class DepthRanges {
 public:
-    // MAP_SIZE (a power of two) texels per side; for the YSM, the MSSM part has YSM_SIZE.
-    DepthRanges(int map_size, Accel accel, int ysm_size);
+    // MAP_SIZE (a power of two) texels per side; for the YSM, the MSSM part has YSM_SIZE;
+    // FAR_LAYER: also the far layer (renderFarLayer()).
+    DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer = false);
 
     // Renders the casters' distance along the light's forward axis (empty texels: kEmpty)
     // into HSM level 0, through VIEW_PROJ from the light's centre.
     void renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                    const glm::mat4& view_proj);
-    // Builds HSM levels 1.. from level 0.
+    // Renders the far layer's level 0 after renderMap(): per texel the distance of the nearest
+    // caster surface more than kPeelGap (relative) beyond the map's, kEmpty where none.
+    void renderFarLayer(const passes::GpuScene& scene, const scene::RectLight& light,
+                        const glm::mat4& view_proj);
+    // Builds HSM levels 1.. from level 0 (and the far layer's, with one).
     void buildHsm();
     // Builds the MSSM (from HSM level 0) or the YSM's MSSM part (from HSM level mssmBase()).
     // The YSM's layer 0 is left unwritten: a query reaches the MSSM part only when its extent
@@ -37,15 +45,22 @@ public:
     int mssmLayers() const { return mssm_layers_; }
     const gl::Texture& hsm() const { return hsm_; }    // RG32F mips: (min, max) distance
     const gl::Texture& mssm() const { return mssm_; }  // RG32F array, layer k: 2^k neighbourhoods
+    const gl::Texture& farLayer() const { return far_; }  // RG32F mips as hsm(); far layer only
 
     static constexpr float kEmpty = 1e30f;  // the distance stored where no caster is
+    // A surface belongs to the far layer when it lies more than this fraction of the front's
+    // distance behind it: the back of a closed caster, not the front's own triangles again.
+    static constexpr float kPeelGap = 0.01f;
 
 private:
     int map_size_, levels_, mssm_base_ = 0, mssm_layers_ = 0;
     bool ysm_ = false;
     gl::Texture hsm_, depth_, mssm_;
     gl::Framebuffer fbo_;
-    passes::LightDepthPass depth_pass_;  // distances into HSM level 0
+    passes::LightDepthPass depth_pass_;                  // distances into HSM level 0
+    gl::Texture far_;                                    // the far layer's pyramid
+    gl::Framebuffer far_fbo_;                            // its level 0 and depth_
+    std::unique_ptr<passes::LightDepthPass> peel_pass_;  // the far layer's (peel.frag)
     gl::Program hsm_program_, mssm_program_;
 };
 

@@ -94,6 +94,11 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
         glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_EXTENT, rects_->extent().id());
         glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
     }
+    if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
+    if (far_rects_) {
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT, far_rects_->extent().id());
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH, far_rects_->depth().id());
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_STATS, stats_.id());
     fullscreen_.draw();
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -90,9 +90,10 @@ TEST(GpuParams, DefinesCarryTheValues) {
     const auto* bitmask = techniques::findTechnique("bitmask");
     ASSERT_NE(bitmask, nullptr);
     const Params p = resolveParams(
-        bitmask->params, {{"name", "bitmask"}, {"accel", "mssm"}, {"gap_fill", false}}, "test");
+        bitmask->params,
+        {{"name", "bitmask"}, {"accel", "mssm"}, {"gap_fill", false}, {"layers", 1}}, "test");
     const gl::Defines defines = gl::paramDefines(bitmask->params, p);
-    const gl::Defines expected = {{"ACCEL", "1"}, {"GAP_FILL", "0"}};
+    const gl::Defines expected = {{"ACCEL", "1"}, {"GAP_FILL", "0"}, {"LAYERS", "1"}};
     EXPECT_EQ(defines, expected);
 }
 
