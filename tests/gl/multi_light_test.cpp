@@ -49,3 +49,25 @@ TEST(MultiLightGL, VisibilityIsIrradianceWeighted) {
     }
     EXPECT_GT(mixed, 100) << "the two lights must shadow different pixels";
 }
+
+TEST(MultiLightGL, EachLightsVisibilityIsOneOnTheBackground) {
+    // scenes/conformance/two_lights.json at 64 x 48: its top rows see no geometry. What a
+    // technique leaves in a light's layer there differed (0 for `reference`, 1 for `exact`),
+    // so the per-light channels of two techniques differed where nothing is; they are 1 there,
+    // as `visibility` is.
+    for (const char* technique : {"exact", "reference", "hard"}) {
+        auto img = renderScene("../../../scenes/conformance/two_lights.json",
+                               {{"image.width", "64"},
+                                {"image.height", "48"},
+                                {"technique", std::string(R"({"name": ")") + technique + "\"}"}});
+        const auto& id = channel(img, "id");
+        long background = 0;
+        for (size_t i = 0; i < id.size(); ++i) {
+            if (id[i] >= 0) continue;
+            ++background;
+            for (const char* c : {"visibility", "visibility.0", "visibility.1"})
+                ASSERT_EQ(channel(img, c)[i], 1.0f) << technique << " " << c << " pixel " << i;
+        }
+        EXPECT_GT(background, 50) << technique;
+    }
+}
