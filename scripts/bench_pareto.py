@@ -254,9 +254,10 @@ def goal(name, bound, rows):
 
 
 def pick(rows, sweep, params=None):
-    """SWEEP's runs with PARAMS, or at the technique's defaults."""
+    """SWEEP's runs with PARAMS (key=value words, in any order), or at the technique's
+    defaults."""
     return [r for r in rows if r["sweep"] == sweep and (
-        r["params"] == params if params else r["defaults"])]
+        set(r["params"].split()) == set(params.split()) if params else r["defaults"])]
 
 
 def print_goals(rows, shares):
