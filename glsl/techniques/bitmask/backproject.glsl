@@ -193,6 +193,20 @@ bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Cov
 #include "techniques/bitmask/microquads.glsl"
 #endif
 
+#if LAYERS == 2
+// Whether a far-layer micro-occluder of LEVEL in the texel range R (levelRange()) can lie in
+// front of depth PZ: the far pyramid's min over R grown by a texel of LEVEL on each side (a
+// microrect's depth is the min of texels it merged, which reach into the texel below it,
+// microrects.comp). Where none can, its loop would read every texel of R for nothing: on a
+// caster's lit side, whose own far side lies behind it.
+bool farLayerInFront(ivec4 r, int level, float pz) {
+    int n = u_map_size >> level;
+    ivec4 g = clamp(r + ivec4(-1, -1, 1, 1), ivec4(0), ivec4(n - 1));
+    ivec4 r0 = ivec4(g.xy << level, ((g.zw + 1) << level) - 1);
+    return pyramidRange(u_far, r0, hsmQueryLevel(r0)).x < pz;
+}
+#endif
+
 // Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
 // plane HORIZON): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
 // far layer's micropatches (microrects with microrects) of the same texels, unless the map's already hide the whole light;
@@ -209,7 +223,8 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
     bool full = backprojectLayer(0, p, pz, levelRange(area, level, 1), level, c, count);
 #endif
 #if LAYERS == 2
-    if (!full) backprojectLayer(1, p, pz, levelRange(area, level, 1), level, c, count);
+    ivec4 r = levelRange(area, level, 1);
+    if (!full && farLayerInFront(r, level, pz)) backprojectLayer(1, p, pz, r, level, c, count);
 #endif
 #if BITMASK
     return maskVisibility(c.m0, c.m1);

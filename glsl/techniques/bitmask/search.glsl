@@ -132,11 +132,15 @@ int hsmQueryLevel(ivec4 r) {
     return k;
 }
 
-vec2 hsmRange(ivec4 r, int k) {
+// The (min, max) over the inclusive texel range R (level 0) of a min/max PYRAMID, from its
+// level K (hsmQueryLevel()).
+vec2 pyramidRange(sampler2D pyramid, ivec4 r, int k) {
     ivec4 q = r >> k;
-    return combine4(texelFetch(u_hsm, q.xy, k).rg, texelFetch(u_hsm, q.zy, k).rg,
-                    texelFetch(u_hsm, q.xw, k).rg, texelFetch(u_hsm, q.zw, k).rg);
+    return combine4(texelFetch(pyramid, q.xy, k).rg, texelFetch(pyramid, q.zy, k).rg,
+                    texelFetch(pyramid, q.xw, k).rg, texelFetch(pyramid, q.zw, k).rg);
 }
+
+vec2 hsmRange(ivec4 r, int k) { return pyramidRange(u_hsm, r, k); }
 
 #if ACCEL != 0
 // The range over the inclusive texel range R of MSSM layer 0: four (overlapping) power-of-two
