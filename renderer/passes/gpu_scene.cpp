@@ -165,7 +165,9 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
             int tex = o.model->material_texture[m];
             if (!d.has_uvs) tex = -1;
             if (textures) gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
-            if (tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
+            // Only for a program that samples it: bound for any other, it replaced whatever
+            // that program's own texture at TEXTURE_UNIT was on textured objects.
+            if (textures && tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
                 glBindTextureUnit(static_cast<GLuint>(texture_unit),
                                   o.model->textures[static_cast<size_t>(tex)].id());
             glDrawElementsInstancedBaseVertex(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
