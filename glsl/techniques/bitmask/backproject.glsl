@@ -3,10 +3,11 @@
 // receiver onto the light; its light rectangle sets the bits of the light samples inside it
 // (BITMASK 1, four half-plane table lookups in a buffer) or adds its area (BITMASK 0). GAP_FILL 1
 // extends a micro-occluder towards a farther neighbour of its level so their projections leave no
-// gap. LAYERS 2 back-projects the far layer's micropatches too (depth peeling, as Bavoil et al.
-// 2008 add to back-projection): what the light's edges see under a caster's silhouette, which
-// the map from its centre does not hold. MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference point,
-// the extent and depth come from their own mip chains (section 5.2), with the same extension.
+// gap. MICRORECTS 1 back-projects microrects instead: the level's texel gives the reference
+// point, the extent and depth come from their own mip chains (section 5.2), with the same
+// extension. LAYERS 2 back-projects the far layer's micro-occluders too (depth peeling, as
+// Bavoil et al. 2008 add to back-projection): what the light's edges see under a caster's
+// silhouette, which the map from its centre does not hold.
 // On a receiver that also casts, the light's part below its tangent plane counts as hidden
 // (its own far side hides it, as `exact` finds): those samples are set too (BITMASK 1), or the
 // area share above the plane scales the visibility (BITMASK 0). Needs search.glsl.
@@ -209,7 +210,8 @@ bool farLayerInFront(ivec4 r, int level, float pz) {
 
 // Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
 // plane HORIZON): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
-// far layer's micropatches (microrects with microrects) of the same texels, unless the map's already hide the whole light;
+// far layer's micropatches (microrects with microrects) of the same texels, unless the map's
+// already hide the whole light or none of the far layer's lies in front (farLayerInFront());
 // returns visibility, COUNT = micro-occluders back-projected.
 float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
     count = 0;
