@@ -125,15 +125,13 @@ output::Image assembleFrameImage(const FrameReadback& rb) {
             ids.pixels[i] = static_cast<float>(id[s]);
         }
     }
-    // Each light's visibility, 1 on the background as `visibility` is: what a technique left in
-    // its layer there (0 or 1, by technique) means nothing, and golden diffs would see it.
+    // Each light's visibility, 1 on the background (Z +inf) as `visibility` is: what a technique
+    // left in its layer there (0 or 1, by technique) means nothing, and golden diffs would see it.
     for (size_t l = 0; l < rb.light_visibility.size(); ++l) {
         auto& light = img.add("visibility." + std::to_string(l), PixelType::Float).pixels;
         copyRows(rb.light_visibility[l]->as<float>(), w, h, light);
-        for (int y = 0; y < h; ++y)
-            for (size_t x = 0; x < width; ++x)
-                if (position[4 * (static_cast<size_t>(h - 1 - y) * width + x) + 3] == 0.0f)
-                    light[static_cast<size_t>(y) * width + x] = 1.0f;
+        for (size_t i = 0; i < light.size(); ++i)
+            if (z.pixels[i] == std::numeric_limits<float>::infinity()) light[i] = 1.0f;
     }
     for (size_t d = 0; d < rb.diagnostics.size(); ++d)
         combineDiagnostic(

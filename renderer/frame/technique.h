@@ -67,8 +67,8 @@ struct TechniqueInfo {
     // "technique.<key>: ..." when PARAMS exceed it, else "". nullptr: none.
     std::string (*limit_error)(const Params&) = nullptr;
     // The most output layers environment() needs for PARAMS (a light each, an irradiance layer
-    // one; folded lights a batch and two more): each is a visibility and a diagnostic layer of the frame,
-    // which the memory budget counts before anything is allocated. nullptr: none.
+    // one; folded lights a batch and two more): each is a visibility and a diagnostic layer of the
+    // frame, which the memory budget counts before anything is allocated. nullptr: none.
     int (*environment_lights_max)(const Params&) = nullptr;
 };
 

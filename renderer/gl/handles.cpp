@@ -48,10 +48,11 @@ void setNearestClamp(GLuint id) {
 }
 }  // namespace
 
-Texture createTexture2D(GLenum format, int width, int height, std::string_view label) {
+Texture createTexture2D(GLenum format, int width, int height, std::string_view label, int levels) {
     Texture t = createTexture(GL_TEXTURE_2D, label);
-    glTextureStorage2D(t.id(), 1, format, width, height);
+    glTextureStorage2D(t.id(), levels, format, width, height);
     setNearestClamp(t.id());
+    if (levels > 1) glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     return t;
 }
 

@@ -86,8 +86,10 @@ Framebuffer createFramebuffer(std::string_view label);
 VertexArray createVertexArray(std::string_view label);
 Query createQuery(GLenum target, std::string_view label);
 
-// A 2D texture with storage: FORMAT e.g. GL_RGBA32F, one mip level, NEAREST, clamp.
-Texture createTexture2D(GLenum format, int width, int height, std::string_view label);
+// A 2D texture with storage: FORMAT e.g. GL_RGBA32F, LEVELS mip levels, NEAREST (between
+// levels too), clamp.
+Texture createTexture2D(GLenum format, int width, int height, std::string_view label,
+                        int levels = 1);
 // A 2D array texture with storage, NEAREST, clamp.
 Texture createTexture2DArray(GLenum format, int width, int height, int layers,
                              std::string_view label);

@@ -219,13 +219,13 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
 #if BITMASK
     addBelowHorizon(horizon, c.m0, c.m1);
 #endif
+    ivec4 r = levelRange(area, level, 1);
 #if MICROQUADS
     bool full = addQuads(p, pz, area, level, c.m0, c.m1, count);
 #else
-    bool full = backprojectLayer(0, p, pz, levelRange(area, level, 1), level, c, count);
+    bool full = backprojectLayer(0, p, pz, r, level, c, count);
 #endif
 #if LAYERS == 2
-    ivec4 r = levelRange(area, level, 1);
     if (!full && farLayerInFront(r, level, pz)) backprojectLayer(1, p, pz, r, level, c, count);
 #endif
 #if BITMASK

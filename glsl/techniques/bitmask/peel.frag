@@ -4,8 +4,6 @@
 // HSM's level 0: a sphere's far side, which the light's edges see under its silhouette.
 #include "techniques/bitmask/bindings.glsl"
 in float v_depth;  // the distance (the view's near 0, range 1)
-in vec3 v_world;
-in vec3 v_normal;
 layout(binding = BITMASK_UNIT_PEEL_FRONT) uniform sampler2D u_front;  // HSM level 0
 uniform float u_peel_gap;
 layout(location = 0) out vec2 o_range;

@@ -18,17 +18,6 @@ GLuint groupsFor(int size) {
     return static_cast<GLuint>((size + 7) / 8);
 }
 
-// A (min, max) distance pyramid of LEVELS levels, SIZE^2 at level 0.
-gl::Texture createPyramid(int size, int levels, const char* label) {
-    gl::Texture t = gl::createTexture(GL_TEXTURE_2D, label);
-    glTextureStorage2D(t.id(), levels, GL_RG32F, size, size);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
-}
-
 // A framebuffer drawing into level 0 of PYRAMID, depth-tested against DEPTH.
 gl::Framebuffer pyramidTarget(const gl::Texture& pyramid, const gl::Texture& depth,
                               const char* label) {
@@ -58,11 +47,11 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer
     : map_size_(map_size),
       levels_(log2Of(map_size) + 1),
       depth_pass_("bitmask light depth", passes::LightDepthPass::Output::Distance) {
-    hsm_ = createPyramid(map_size_, levels_, "bitmask hsm");
+    hsm_ = gl::createTexture2D(GL_RG32F, map_size_, map_size_, "bitmask hsm", levels_);
     depth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, map_size_, map_size_, "bitmask map depth");
     fbo_ = pyramidTarget(hsm_, depth_, "bitmask light depth map");
     if (far_layer) {
-        far_ = createPyramid(map_size_, levels_, "bitmask far layer");
+        far_ = gl::createTexture2D(GL_RG32F, map_size_, map_size_, "bitmask far layer", levels_);
         far_fbo_ = pyramidTarget(far_, depth_, "bitmask far layer map");
         peel_pass_ = std::make_unique<passes::LightDepthPass>("bitmask far layer peel",
                                                               "techniques/bitmask/peel.frag");

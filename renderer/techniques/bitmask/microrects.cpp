@@ -9,15 +9,10 @@ namespace penumbra::techniques::bitmask {
 
 MicroRects::MicroRects(int map_size) : map_size_(map_size), levels_(1) {
     while ((map_size_ >> levels_) > 0) ++levels_;
-    auto mipChain = [&](GLenum format, const char* label) {
-        gl::Texture t = gl::createTexture(GL_TEXTURE_2D, label);
-        glTextureStorage2D(t.id(), levels_, format, map_size_, map_size_);
-        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        return t;
-    };
-    extent_ = mipChain(GL_RGBA32F, "bitmask microrect extents");
-    depth_ = mipChain(GL_R32F, "bitmask microrect depths");
+    extent_ =
+        gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "bitmask microrect extents", levels_);
+    depth_ =
+        gl::createTexture2D(GL_R32F, map_size_, map_size_, "bitmask microrect depths", levels_);
     program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"});
 }
 

@@ -13,10 +13,8 @@ void Ssm::prepareLod() {
     lod_program_ = gl::buildProgram("ssm lod", {"techniques/ssm/lod.comp"});
     lod_levels_ = 1;  // the pyramid's: up to kMaxLodLevel
     while (lod_levels_ <= kMaxLodLevel && (map_size_ >> lod_levels_) > 0) ++lod_levels_;
-    lod_pyramid_ = gl::createTexture(GL_TEXTURE_2D, "ssm lod pyramid");
-    glTextureStorage2D(lod_pyramid_.id(), lod_levels_, GL_RGBA32F, map_size_, map_size_);
-    glTextureParameteri(lod_pyramid_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-    glTextureParameteri(lod_pyramid_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    lod_pyramid_ =
+        gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "ssm lod pyramid", lod_levels_);
     lod_patches_ = gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "ssm lod micro-patches");
 }
 
