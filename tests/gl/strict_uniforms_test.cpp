@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+
+#include <unistd.h>
 
 #include "gl_test_env.h"
 #include "renderer/gl/program.h"
@@ -19,7 +22,10 @@ namespace {
 // PENUMBRA_GLSL_DIR development path), its fragment shader declaring u_dead and never reading
 // it.
 gl::Program scratchProgram() {
-    const auto dir = std::filesystem::temp_directory_path() / "penumbra_strict_uniforms";
+    // A folder per process: ctest runs this file's tests in parallel, and one test's
+    // remove_all below took the shaders from under another (PENUMBRA_GLSL_DIR: cannot read).
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("penumbra_strict_uniforms_" + std::to_string(getpid()));
     std::filesystem::create_directories(dir / "t");
     std::ofstream(dir / "t/a.vert") << "#version 450 core\nuniform float u_scale;\n"
                                        "void main() { gl_Position = vec4(u_scale); }\n";
