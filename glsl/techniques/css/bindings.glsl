@@ -13,5 +13,8 @@
 #define CSS_UNIT_VISIBILITY_BASIS_SEARCH 3  // the same texture through the search sampler
 #define CSS_UNIT_VISIBILITY_ID 4
 #define CSS_UNIT_VISIBILITY_COARSE 5  // visibility_fine.frag: the coarse samples
+// visibility.glsl: SSBO of float per object id, the nearest normalised depth of its world
+// bounds from the light's centre (css.cpp, objectNearest)
+#define CSS_BINDING_OBJECT_NEAREST 3
 
 #endif

@@ -53,6 +53,9 @@ uniform float u_ring_shift;  // the test is evaluated at d - shift
 uniform float u_sharpen_a;   // contact sharpening v^p, p = 1 + A exp(-B (d - z_avg))
 uniform float u_sharpen_b;
 uniform float u_self_exclude;  // share of a kernel's half-width for the receiver's own plane
+layout(std430, binding = CSS_BINDING_OBJECT_NEAREST) readonly buffer ObjectNearest {
+    float u_object_nearest[];  // per object id: its bounds' nearest normalised depth
+};
 
 // A box kernel centred at C with size S (both in texels of the N x N map), prepared once and
 // applied to each basis layer. SEARCH marks the blocker searches' kernels: with mipmaps they
@@ -230,10 +233,16 @@ vec3 cssShadow(Receiver r) {
     float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
     float ds = max(d - u_ring_shift, 0.0);
     // The test depth under a kernel of S texels: ds, less the drop of the receiver's own
-    // plane over u_self_exclude of the kernel's half-width when the receiver is in the map.
+    // plane over u_self_exclude of the kernel's half-width when the receiver is in the map,
+    // but no nearer than its object comes to the light: its own surface lies behind both. A
+    // plane seen edge-on in a wide kernel drops to depth 0, which would hide every blocker
+    // from a face nearly edge-on to the light (a tilted box's face under a sphere it touches).
     bool exclude = r.casts && u_self_exclude > 0.0;
     vec2 half_tan = 0.5 * u_self_exclude / texels_per_tan;
-#define TEST_DEPTH(S) (exclude ? max(ds - planeDrop(l, nl, u, half_tan * (S)), 0.0) : ds)
+    // (less the ring shift, as the receiver's own depth: the reconstructed step is smooth).
+    float own = r.id < u_object_nearest.length()
+                    ? clamp(u_object_nearest[r.id] - u_ring_shift, 0.0, ds) : 0.0;
+#define TEST_DEPTH(S) (exclude ? max(ds - planeDrop(l, nl, u, half_tan * (S)), own) : ds)
 
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));

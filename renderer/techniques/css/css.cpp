@@ -3,10 +3,12 @@
 // summed-area tables; each pixel finds its average blocker depth and filters the shadow test
 // with a kernel of the penumbra's width (glsl/techniques/css/visibility.glsl); with
 // `interpolate`, at every other pixel first and at the rest only where interpolation is unsafe.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "glsl/techniques/css/bindings.glsl"
 #include "renderer/gl/param_uniforms.h"
@@ -47,7 +49,10 @@ public:
             ctx.pass(filter == CsmMaps::Filter::Sat ? "css_sat" : "css_mipmap",
                      [&] { maps_->prefilter(filter); });
         }
-        ctx.pass("css_visibility", [&] { visibility(ctx, light, window, range, filter); });
+        ctx.pass("css_visibility", [&] {
+            uploadObjectNearest(ctx.gpu, light, range);
+            visibility(ctx, light, window, range, filter);
+        });
         ctx.stats["maps_rendered"] = ctx.stats.value("maps_rendered", 0) + (window.empty() ? 0 : 1);
         ctx.stats["order"] = settings_.order;
     }
@@ -82,6 +87,28 @@ private:
                 programs.fine = build("css visibility fine", "techniques/css/visibility_fine.frag");
             }
         }
+    }
+
+    // Per object id, the nearest depth of its world bounds from LIGHT's centre, normalised as
+    // the map's (visibility.glsl: a receiver's own surface is no nearer, whatever its plane).
+    void uploadObjectNearest(const passes::GpuScene& gpu, const scene::RectLight& light,
+                             const css::DepthRange& range) {
+        std::vector<float> nearest(1, 0.0f);
+        const glm::vec3 forward = light.forward();
+        for (const passes::GpuObject& o : gpu.objects()) {
+            float z = 1e30f;
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::vec3 c((corner & 1) ? o.world_bounds.max.x : o.world_bounds.min.x,
+                                  (corner & 2) ? o.world_bounds.max.y : o.world_bounds.min.y,
+                                  (corner & 4) ? o.world_bounds.max.z : o.world_bounds.min.z);
+                z = std::min(z, glm::dot(c - light.position, forward));
+            }
+            if (nearest.size() <= size_t(o.id)) nearest.resize(size_t(o.id) + 1, 0.0f);
+            nearest[size_t(o.id)] = (z - range.near) / (range.far - range.near);
+        }
+        if (!object_nearest_) object_nearest_ = gl::createBuffer("css object nearest");
+        glNamedBufferData(object_nearest_.id(), GLsizeiptr(nearest.size() * sizeof(float)),
+                          nearest.data(), GL_DYNAMIC_DRAW);
     }
 
     // The target of the coarse samples (every other pixel of a WIDTH x HEIGHT image) and the
@@ -148,6 +175,8 @@ private:
         glBindTextureUnit(CSS_UNIT_VISIBILITY_ID, ctx.gbuffer.id().id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
                          ctx.gpu.casterFlags().id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CSS_BINDING_OBJECT_NEAREST,
+                         object_nearest_.id());
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_window_lo", w.lo);
@@ -166,6 +195,7 @@ private:
     Params params_;
     css::CssSettings settings_;
     std::unique_ptr<CsmMaps> maps_;
+    gl::Buffer object_nearest_;  // uploadObjectNearest()
     bool has_mipmap_ = false, has_sat_ = false;
     struct Programs {
         gl::Program every, coarse, fine;  // every pixel; with `interpolate`, its two passes
