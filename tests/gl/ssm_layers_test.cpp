@@ -232,6 +232,23 @@ TEST(SsmLayersGL, ATopFaceDoesNotStripeItsOwnSteepWall) {
     EXPECT_LE(box, 0.08);
 }
 
+TEST(SsmLayersGL, AWallFacingAwayFromTheLightTakesNoOtherSurfacesLayer) {
+    // A random scene nobody tuned on (scripts/random-scenes seed 33, ssm_edge_on_wall.json): a
+    // box's wall faces away from the light's centre, nearly edge-on, so only the light's part
+    // above its horizon reaches it (exact: about 0.1). No layer holds such a surface, but at
+    // the wall's foot the floor's layer lies within the depth tolerance and matched, giving
+    // the wall's lower part the floor's shadow (0.01), which is the box's own. A pixel facing
+    // away from the centre now matches only its own object's layers (a ball's terminator under
+    // a table still takes the table's shadow from the ball's lit side), else it takes the
+    // horizon share. Measured 0.0029 (0.0272 before).
+    const Image exact =
+        renderScene("ssm_edge_on_wall.json", {{"technique", penumbra::testing::kGroundTruth}});
+    const Image img = renderScene("ssm_edge_on_wall.json", {{"technique", ssm(4)}});
+    const double box = visibilityMae(img, exact, 1, 1);
+    std::printf("ssm, a wall facing away from the light: the box's visibility MAE %.4f\n", box);
+    EXPECT_LE(box, 0.015);
+}
+
 TEST(SsmLayersGL, TheFarSideIsTheSurfaceBeyondTheFrontNotTheFloor) {
     // both_everywhere: a box resting on a floor of role both. The farthest caster surface
     // behind the box, seen from the light's centre, is the floor, which hides nothing from the

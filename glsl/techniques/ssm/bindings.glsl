@@ -51,6 +51,7 @@
 #define SSM_UNIT_VISIBILITY_SSM 3
 #define SSM_UNIT_VISIBILITY_SSM_BACK 4
 #define SSM_UNIT_VISIBILITY_LAYERS 5
+#define SSM_UNIT_VISIBILITY_LAYER_IDS 6  // the object id per layer texel
 // A micro-patch's texel index holds its lod level from this bit (micro_patches.h kLevelShift)
 #define SSM_LEVEL_SHIFT 24
 // Buffers

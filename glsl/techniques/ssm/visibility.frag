@@ -2,11 +2,13 @@
 // `ssm` visibility: each camera pixel of a receiver is projected from the light's centre into
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
-// depth matches the pixel's. A pixel no layer matches sees the light's part above its horizon
-// when it faces away from the light's centre (no layer holds such surfaces); else takes the
-// nearest layer, which for a pixel beyond a full stack of layers is the deepest: what shadows
-// that surface shadows the pixel behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are lit. Diagnostic 0: the summed occlusion; 1: the receiver layer
-// used (of the texel weighing most; -1 where none).
+// depth matches the pixel's (for a pixel facing away from the light's centre, which no layer
+// holds, only its own object's layers; matching none, it sees the light's part above its
+// horizon); a pixel no layer matches takes the nearest layer, which for a pixel beyond a full
+// stack of layers is the deepest: what shadows that surface shadows the pixel behind it too (a
+// lower bound on its occlusion). Pixels of objects that receive no shadow are lit. Diagnostic
+// 0: the summed occlusion; 1: the receiver layer used (of the texel weighing most; -1 where
+// none).
 #include "techniques/ssm/bindings.glsl"
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
@@ -27,6 +29,7 @@ layout(binding = SSM_UNIT_VISIBILITY_SSM_BACK) uniform sampler2DArray u_ssm_back
 #endif
 // Receiver depth per layer, 1 = none
 layout(binding = SSM_UNIT_VISIBILITY_LAYERS) uniform sampler2DArray u_layers;
+layout(binding = SSM_UNIT_VISIBILITY_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 #include "common/light_frame.glsl"
 uniform vec2 u_light_size;
 uniform vec2 u_ssm_lo;
@@ -51,8 +54,10 @@ float occlusionOf(int layer, ivec2 texel) {
 }
 
 // The bilinear occlusion at UV over the texels whose best-matching layer lies within TOL of
-// the pixel's depth DP; false when no texel matches. LAYER: the layer of the heaviest texel.
-bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion, out int layer) {
+// the pixel's depth DP (and holds object OWN, unless OWN < 0); false when no texel matches.
+// LAYER: the layer of the heaviest texel.
+bool layeredOcclusion(vec2 uv, float dp, float tol, int own, out float occlusion,
+                      out int layer) {
     ivec2 res = textureSize(u_ssm, 0).xy;
     vec2 t = uv * vec2(res) - 0.5;
     ivec2 base = ivec2(floor(t));
@@ -69,6 +74,7 @@ bool layeredOcclusion(vec2 uv, float dp, float tol, out float occlusion, out int
                 float dk = texelFetch(u_layers, ivec3(q, k), 0).r;
                 if (dk >= 1.0) break;  // no deeper layer here
                 float diff = abs(dk - dp);
+                if (own >= 0 && texelFetch(u_layer_ids, ivec3(q, k), 0).r != own) continue;
                 if (diff <= best_diff) {
                     best_diff = diff;
                     best = k;
@@ -119,8 +125,15 @@ void main() {
         float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
         float dp = (z - u_near) / u_range;
-        if (!layeredOcclusion(uv, dp, tol, occlusion, layer)) {
-            vec3 n = geometricNormal(pix);
+        // A surface facing away from the light's centre is in no layer (they hold light-facing
+        // surfaces), so it matches only layers of its own object: its light-facing surface
+        // next to it, whose occlusion by other casters it shares. Another object's layer at its
+        // depth is in the pixel's own object's shadow: where a wall nearly edge-on to the light
+        // meets the floor, the floor's layer matched the wall's foot and darkened it. A pixel
+        // matching none sees the light's part above its horizon.
+        vec3 n = geometricNormal(pix);
+        bool away = dot(n, u_light_centre - pos.xyz) <= 0.0;
+        if (!layeredOcclusion(uv, dp, tol, away ? id : -1, occlusion, layer)) {
             int nearest = -1;
             float nearest_diff = 2.0;
             ivec2 res = textureSize(u_layers, 0).xy;
@@ -133,7 +146,7 @@ void main() {
                     nearest = k;
                 }
             }
-            if (dot(n, u_light_centre - pos.xyz) <= 0.0 || nearest < 0) {
+            if (away || nearest < 0) {
                 float share = shareAboveHorizon(pos.xyz, n);
                 o_visibility = vec4(share, 0.0, 0.0, 0.0);
                 o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);

@@ -29,6 +29,7 @@ void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
     if (softMapCount() == 2)
         glBindTextureUnit(SSM_UNIT_VISIBILITY_SSM_BACK, soft_maps_[1]->occlusion.id());
     glBindTextureUnit(SSM_UNIT_VISIBILITY_LAYERS, receiver_layers_->depth.id());
+    glBindTextureUnit(SSM_UNIT_VISIBILITY_LAYER_IDS, receiver_layers_->ids.id());
     ctx.gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
                      ctx.gpu.casterFlags().id());
