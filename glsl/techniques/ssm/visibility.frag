@@ -2,13 +2,13 @@
 // `ssm` visibility: each camera pixel of a receiver is projected from the light's centre into
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
-// depth matches the pixel's (for a pixel facing away from the light's centre, which no layer
-// holds, only its own object's layers; matching none, it sees the light's part above its
-// horizon); a pixel no layer matches takes the nearest layer, which for a pixel beyond a full
-// stack of layers is the deepest: what shadows that surface shadows the pixel behind it too (a
-// lower bound on its occlusion). Pixels of objects that receive no shadow are lit. Diagnostic
-// 0: the summed occlusion; 1: the receiver layer used (of the texel weighing most; -1 where
-// none).
+// depth matches the pixel's, its own object's layers first (a pixel facing away from the
+// light's centre, which no layer holds, takes only those; matching none, it sees the light's
+// part above its horizon); a pixel no layer matches takes the nearest layer, which for a pixel
+// beyond a full stack of layers is the deepest: what shadows that surface shadows the pixel
+// behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are
+// lit. Diagnostic 0: the summed occlusion; 1: the receiver layer used (of the texel weighing
+// most; -1 where none).
 #include "techniques/ssm/bindings.glsl"
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
@@ -125,15 +125,16 @@ void main() {
         float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
         float dp = (z - u_near) / u_range;
-        // A surface facing away from the light's centre is in no layer (they hold light-facing
-        // surfaces), so it matches only layers of its own object: its light-facing surface
-        // next to it, whose occlusion by other casters it shares. Another object's layer at its
-        // depth is in the pixel's own object's shadow: where a wall nearly edge-on to the light
-        // meets the floor, the floor's layer matched the wall's foot and darkened it. A pixel
-        // matching none sees the light's part above its horizon.
+        // Layers of the pixel's own object first: another object's layer at its depth can lie
+        // in the pixel's object's own shadow (where a steep wall meets the floor, the floor's
+        // layer matched the wall's foot and darkened it). A surface facing away from the
+        // light's centre is in no layer (they hold light-facing surfaces), so it matches only
+        // its own object's (its lit side next to it, whose occlusion by other casters it
+        // shares); matching none, it sees the light's part above its horizon.
         vec3 n = geometricNormal(pix);
         bool away = dot(n, u_light_centre - pos.xyz) <= 0.0;
-        if (!layeredOcclusion(uv, dp, tol, away ? id : -1, occlusion, layer)) {
+        if (!layeredOcclusion(uv, dp, tol, id, occlusion, layer) &&
+            (away || !layeredOcclusion(uv, dp, tol, -1, occlusion, layer))) {
             int nearest = -1;
             float nearest_diff = 2.0;
             ivec2 res = textureSize(u_layers, 0).xy;
