@@ -8,10 +8,7 @@ namespace penumbra::passes {
 Bounds Bounds::transformed(const glm::mat4& m) const {
     Bounds out;
     if (empty()) return out;
-    for (int i = 0; i < 8; ++i) {
-        glm::vec3 c((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z);
-        out.extend(glm::vec3(m * glm::vec4(c, 1.0f)));
-    }
+    for (int i = 0; i < 8; ++i) out.extend(glm::vec3(m * glm::vec4(corner(i), 1.0f)));
     return out;
 }
 

@@ -25,6 +25,10 @@ struct Bounds {
     void extend(const Bounds& b) {
         if (!b.empty()) extend(b.min), extend(b.max);
     }
+    // Corner I (0-7): bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::vec3 corner(int i) const {
+        return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+    }
     Bounds transformed(const glm::mat4& m) const;
 };
 

@@ -24,10 +24,7 @@ LightWindow windowOf(const scene::RectLight& light, const Bounds& bounds) {
     glm::vec3 corners[8];
     float zmin = 1e30f, zmax = -1e30f;
     for (int i = 0; i < 8; ++i) {
-        corners[i] =
-            glm::vec3((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                      (i & 4) ? bounds.max.z : bounds.min.z) -
-            light.position;
+        corners[i] = bounds.corner(i) - light.position;
         const float z = glm::dot(corners[i], f);
         zmin = std::min(zmin, z), zmax = std::max(zmax, z);
     }

@@ -19,9 +19,7 @@ SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
     float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
     if (!casters.empty()) {
         for (int i = 0; i < 8; ++i) {
-            glm::vec3 c((i & 1) ? casters.max.x : casters.min.x,
-                        (i & 2) ? casters.max.y : casters.min.y,
-                        (i & 4) ? casters.max.z : casters.min.z);
+            const glm::vec3 c = casters.corner(i);
             float z = glm::dot(c - point, f);
             zmin = std::min(zmin, z);
             zmax = std::max(zmax, z);
@@ -37,9 +35,7 @@ SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
     const float far = zmax + margin;
     if (!casters.empty()) {
         for (int i = 0; i < 8; ++i) {
-            glm::vec3 c((i & 1) ? casters.max.x : casters.min.x,
-                        (i & 2) ? casters.max.y : casters.min.y,
-                        (i & 4) ? casters.max.z : casters.min.z);
+            const glm::vec3 c = casters.corner(i);
             glm::vec3 d = c - point;
             float z = std::max(glm::dot(d, f), near);
             float x = glm::dot(d, r) / z, y = glm::dot(d, u) / z;

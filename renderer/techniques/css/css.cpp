@@ -97,12 +97,8 @@ private:
         const glm::vec3 forward = light.forward();
         for (const passes::GpuObject& o : gpu.objects()) {
             float z = 1e30f;
-            for (int corner = 0; corner < 8; ++corner) {
-                const glm::vec3 c((corner & 1) ? o.world_bounds.max.x : o.world_bounds.min.x,
-                                  (corner & 2) ? o.world_bounds.max.y : o.world_bounds.min.y,
-                                  (corner & 4) ? o.world_bounds.max.z : o.world_bounds.min.z);
-                z = std::min(z, glm::dot(c - light.position, forward));
-            }
+            for (int i = 0; i < 8; ++i)
+                z = std::min(z, glm::dot(o.world_bounds.corner(i) - light.position, forward));
             if (nearest.size() <= size_t(o.id)) nearest.resize(size_t(o.id) + 1, 0.0f);
             nearest[size_t(o.id)] = (z - range.near) / (range.far - range.near);
         }
