@@ -43,6 +43,9 @@ SWEEPS = [
      ["technique.target_error=0.007,0.014,0.028"]),
     ("adaptive_global", "adaptive", {"technique.metric": "global"},
      ["technique.epsilon=0.001,0.003,0.01"]),
+    # The defaults with every pixel tested against the maps: what skip_lit saves, side by side.
+    ("adaptive_all_pixels", "adaptive", {"technique.skip_lit": False},
+     ["technique.target_error=0.02"]),
     ("bitmask", "bitmask", {}, ["technique.budget=5,8,12,0",
                                 "technique.occluders=micropatch,microquad,microrect",
                                 "technique.layers=1,2"]),

@@ -291,3 +291,28 @@ TEST(AdaptiveGL, DefaultStorageRefinesAsTheArray) {
     EXPECT_EQ(bits.depth, array.depth);
     EXPECT_LE(penumbra::testing::maxAbsDifference(bits.visibility, array.visibility), 1e-5);
 }
+
+TEST(AdaptiveGL, PixelsNoCasterCanShadowAreNotTestedAndLookTheSame) {
+    // skip_lit marks the pixels some caster may shadow from some point of the light (the
+    // pyramid from the pixel to the light searched in the casters' min distances from its
+    // centre) and tests the maps only there; the rest are lit by every map anyway. On thin
+    // bars, a small shadow, a tilted box, a box that casts on itself and the default scene the
+    // image is the same as with every pixel tested, and fewer than half the pixels are tested
+    // where the shadow is small.
+    for (const char* scene : {"adaptive_bars.json", "adaptive_small_shadow.json", "tilted_box.json",
+                              "adaptive_default.json", "both_box.json"}) {
+        SCOPED_TRACE(scene);
+        auto all = render(scene, adaptive(R"(, "skip_lit": false)"));
+        auto some = render(scene, adaptive());
+        EXPECT_FALSE(all.stats.contains("tested_pixels"));
+        const double tested = some.stats.value("tested_pixels", -1.0);
+        const auto pixels = double(all.visibility.size());
+        std::printf("%s: %.0f of %.0f pixels tested\n", scene, tested, pixels);
+        EXPECT_GT(tested, 0.0);
+        EXPECT_LT(tested, pixels);
+        EXPECT_EQ(some.stats.value("maps_rendered", 0), all.stats.value("maps_rendered", 0));
+        EXPECT_LE(penumbra::testing::maxAbsDifference(some.visibility, all.visibility), 1e-6);
+    }
+    const auto small = render("adaptive_small_shadow.json", adaptive());
+    EXPECT_LT(small.stats.value("tested_pixels", 0.0), 0.5 * double(small.visibility.size()));
+}

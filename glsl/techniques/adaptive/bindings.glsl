@@ -12,5 +12,6 @@
 
 // lit_bits.frag and lit_eval.frag (the units above for the G-buffer and the maps)
 #define ADAPTIVE_BINDING_LIT_BITS 8  // SSBO of uint: word w of pixel p at w * pixels + p
+#define ADAPTIVE_UNIT_LIT_REGION 3  // the casters' min/max distance pyramid from the light's centre
 
 #endif

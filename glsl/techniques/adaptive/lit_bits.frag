@@ -1,9 +1,13 @@
 #version 450 core
 // `adaptive`: the hard tests of a batch of light-sample maps at every G-buffer pixel, one bit per
 // view (set: shadowed) in a bit buffer kept for the whole light, so that each map is tested once
-// and dropped: the cells' comparisons read the bits back and lit_eval.frag weights them.
+// and dropped: the cells' comparisons read the bits back and lit_eval.frag weights them. Only
+// pixels whose stencil lit_region.frag set are shaded: the others' bits stay clear.
 #include "common/sample_view.glsl"
 #include "techniques/adaptive/bindings.glsl"
+
+// The stencil test (lit_region.frag's) must come before the shader, which writes a buffer.
+layout(early_fragment_tests) in;
 
 layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
     vec4 u_lookups[3 * MAX_SAMPLE_LOOKUPS];

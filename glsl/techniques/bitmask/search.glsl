@@ -8,6 +8,7 @@
 #define CLASS_UMBRA 2
 
 #include "common/geometric_normal.glsl"
+#include "common/min_max_pyramid.glsl"
 
 layout(binding = BITMASK_UNIT_SEARCH_POSITION) uniform sampler2D u_position;
 layout(binding = BITMASK_UNIT_SEARCH_NORMAL) uniform sampler2D u_normal;
@@ -121,24 +122,8 @@ float areaExtent(vec4 a) {
     return max(c.z - c.x, c.w - c.y);
 }
 
-vec2 combine4(vec2 a, vec2 b, vec2 c, vec2 d) {
-    return vec2(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)));
-}
-
 // The HSM level at which the inclusive texel range R (level 0) spans at most 2 x 2 texels.
-int hsmQueryLevel(ivec4 r) {
-    int k = 0;
-    while (k < u_levels - 1 && ((r.z >> k) - (r.x >> k) > 1 || (r.w >> k) - (r.y >> k) > 1)) ++k;
-    return k;
-}
-
-// The (min, max) over the inclusive texel range R (level 0) of a min/max PYRAMID, from its
-// level K (hsmQueryLevel()).
-vec2 pyramidRange(sampler2D pyramid, ivec4 r, int k) {
-    ivec4 q = r >> k;
-    return combine4(texelFetch(pyramid, q.xy, k).rg, texelFetch(pyramid, q.zy, k).rg,
-                    texelFetch(pyramid, q.xw, k).rg, texelFetch(pyramid, q.zw, k).rg);
-}
+int hsmQueryLevel(ivec4 r) { return pyramidLevel(r, u_levels); }
 
 vec2 hsmRange(ivec4 r, int k) { return pyramidRange(u_hsm, r, k); }
 

@@ -28,6 +28,7 @@ Adaptive::Adaptive(const Params& p)
       accumulate_path_(p.getEnum(kEvaluation) == Evaluation::Accumulate),
       rss_estimate_(p.getEnum(kEstimate) == Estimate::Rss),
       bits_storage_(p.getEnum(kStorage) == Storage::Auto),
+      skip_lit_(p.get(kSkipLit)),
       subdivision_(p.getEnum(kSubdivision)),
       jitter_(p.get(kJitter)),
       seed_(static_cast<unsigned>(p.get(kSeed))),
@@ -60,6 +61,9 @@ void Adaptive::prepare(const gl::ContextInfo& gl, const passes::GpuScene&) {
             settings_.map_size, std::min(kTestBatch, std::max(gl.max_array_layers, 1)),
             gl.has_vertex_layer);
         lit_bits_ = std::make_unique<adaptive::LitBits>();
+        if (skip_lit_)
+            region_ = std::make_unique<bitmask::DepthRanges>(regionSize(settings_.map_size),
+                                                             bitmask::Accel::Hsm, 0);
     }
     accumulate_ = std::make_unique<passes::ShadowAccumulate>();
     map_compare_ = std::make_unique<adaptive::MapCompare>();
@@ -77,7 +81,11 @@ void Adaptive::render(frame::FrameContext& ctx) {
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, zero);
-    if (litPath()) lit_bits_->begin(ctx.gbuffer, max_maps_);
+    marked_ = false;
+    if (litPath()) {
+        lit_bits_->begin(ctx.gbuffer, max_maps_);
+        renderLitRegion(ctx);
+    }
 
     if (light_centre_) {
         const passes::CameraMatrices m = lightCentreView(ctx);
@@ -149,6 +157,27 @@ std::vector<adaptive::CompareResult> Adaptive::compareByQueries(
     return map_compare_->end();
 }
 
+void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
+    if (!region_) return;
+    const scene::RectLight& light = ctx.currentLight();
+    LitRegion region;
+    region.window = passes::occluderWindow(light, ctx.gpu.casterBounds());
+    if (region.window.empty()) return;  // no caster: the tests find none either
+    // The tests' normal offset scales with view 0's texel size; the centre's is nearly the same.
+    const float texel = passes::makeSampleView(light, light.position, ctx.gpu.casterBounds(), 1.0f,
+                                               settings_.map_size)
+                            .params.y;
+    ctx.pass("adaptive_lit_region", [&] {
+        region_->renderMap(ctx.gpu, light, region.window.viewProj(light));
+        region_->buildHsm();
+        region.pyramid = region_->hsm().id();
+        region.size = region_->mapSize();
+        region.levels = region_->levels();
+        lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, &region);
+    });
+    marked_ = true;
+}
+
 // Adds the light's maps, weighted, into its visibility.
 void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree& tree) {
     const scene::RectLight& light = ctx.currentLight();
@@ -208,6 +237,8 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     // The most maps alive at once: a batch on the lit path, else the array's layers.
     const int held = litPath() ? scratch_->layers() : maps_ ? maps_->layers() : 0;
     st["maps_held"] = std::max(st.value("maps_held", 0), held);
+    if (region_ && marked_)  // skip_lit: the pixels tested against the maps
+        st["tested_pixels"] = st.value("tested_pixels", 0.0) + lit_bits_->markedPixels();
     if (error_metric_)
         st["estimated_error"] = std::max(st.value("estimated_error", 0.0), r.estimated_error);
 }
@@ -258,6 +289,11 @@ const TechniqueInfo kAdaptiveTechnique = {
         }
         out.push_back(
             {"technique.map_size", "the light-view G-buffer", saturatingProduct({m, m, 48})});
+        // The lit region's distance pyramid (RG32F, 4/3 for its mips) and its depth buffer.
+        const auto r = static_cast<std::uint64_t>(adaptive::regionSize(p.get(kMapSize)));
+        if (p.get(adaptive::kSkipLit))
+            out.push_back({"technique.map_size", "the lit region's pyramid",
+                           saturatingProduct({r, r, 8 + 8 / 3 + 4})});
         return out;
     }};
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "renderer/techniques/adaptive/lit_bits.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
+#include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -53,6 +55,7 @@ inline constexpr FloatKey kTileEpsilon{"tile_epsilon"};
 inline constexpr IntKey kCompareStride{"compare_stride"};
 inline constexpr IntKey kMaxDepth{"max_depth"};
 inline constexpr IntKey kMaxMaps{"max_maps"};
+inline constexpr BoolKey kSkipLit{"skip_lit"};
 
 inline constexpr std::array kAdaptiveParams = {
     enumParam(kMetric, Metric::Error,
@@ -111,6 +114,11 @@ inline constexpr std::array kAdaptiveParams = {
               "a time and kept as one bit per pixel, which the comparisons and the evaluation "
               "read (the same image as the array); otherwise, and with array: every map is kept "
               "in a texture array until the evaluation"),
+    boolParam(kSkipLit, true,
+              "the default storage: a pixel where no caster lies between it and any point of the "
+              "light (a min/max pyramid of the casters seen from the light's centre, searched "
+              "over the pyramid from the pixel to the light) is not tested against the maps: "
+              "only pixels a caster may shadow pay for every map (false: every pixel tested)"),
     boolParam(kJitter, true,
               "move each sample to a random point of its finest-grid cell (false: the paper's "
               "regular lattice, which aliases with edges parallel to the light's)"),
@@ -134,6 +142,11 @@ inline int mapLayers(int max_maps, int map_size) {
     const auto per_map = std::uint64_t(map_size) * std::uint64_t(map_size) * 4;
     return std::max(
         4, int(std::min<std::uint64_t>(std::uint64_t(max_maps), kMaxArrayBytes / per_map)));
+}
+
+// The lit region's pyramid side (skip_lit): the maps' size up to a power of two, at most 2048.
+inline int regionSize(int map_size) {
+    return int(std::bit_ceil(unsigned(std::clamp(map_size, 16, 2048))));
 }
 
 // What refining a light's quadtree found, for the statistics.
@@ -188,6 +201,10 @@ private:
         return bits_storage_ && bitsPath() && !light_centre_ && !accumulate_path_ &&
                settings_.test.pcf == 1;
     }
+
+    // The lit path with skip_lit: the casters' distance pyramid from the light's centre, which
+    // tells lit_bits.frag the pixels no caster can shadow.
+    void renderLitRegion(frame::FrameContext& ctx);
 
     // Adds the light's maps, weighted, into its visibility.
     void evaluate(frame::FrameContext& ctx, const LightQuadtree& tree);
@@ -249,6 +266,8 @@ private:
     bool accumulate_path_;
     bool rss_estimate_;
     bool bits_storage_;    // storage "auto"
+    bool skip_lit_;        // the lit path: pixels no caster can shadow are not tested
+    bool marked_ = false;  // this light's lit region was marked (skip_lit)
     double shadowed_ = 0;  // the bits path: pixels any root corner shadows, this light
     bool vertex_layer_ = false;
     Subdivision subdivision_;
@@ -259,8 +278,9 @@ private:
     std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
     std::unique_ptr<passes::ShadowAccumulate> accumulate_;
     std::unique_ptr<MapCompare> map_compare_;
-    std::unique_ptr<LitBits> lit_bits_;            // the lit path's
-    std::unique_ptr<passes::GBuffer> light_view_;  // receivers seen from the light's centre
+    std::unique_ptr<LitBits> lit_bits_;             // the lit path's
+    std::unique_ptr<bitmask::DepthRanges> region_;  // the lit path's casters from the centre
+    std::unique_ptr<passes::GBuffer> light_view_;   // receivers seen from the light's centre
     passes::SampleViewBuffer views_buffer_;
     std::vector<passes::SampleView> views_;
 };

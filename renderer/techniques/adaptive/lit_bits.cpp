@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/passes/bindings.h"
+#include "renderer/passes/light_depth.h"
 
 namespace penumbra::techniques::adaptive {
 
@@ -15,7 +16,10 @@ LitBits::LitBits()
           "adaptive lit bits", {"passes/fullscreen.vert", "techniques/adaptive/lit_bits.frag"})),
       eval_program_(
           gl::buildProgram("adaptive lit evaluation",
-                           {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})) {
+                           {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})),
+      region_program_(
+          gl::buildProgram("adaptive lit region",
+                           {"passes/fullscreen.vert", "techniques/adaptive/lit_region.frag"})) {
     sampler_ = createRawDepthSampler();
 }
 
@@ -28,9 +32,12 @@ void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
         width_ = gbuffer.width();
         height_ = gbuffer.height();
         fbo_ = gl::createFramebuffer("adaptive lit bits");
-        glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
-        glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
+        stencil_ = gl::createTexture2D(GL_STENCIL_INDEX8, width_, height_, "adaptive lit stencil");
+        glNamedFramebufferTexture(fbo_.id(), GL_STENCIL_ATTACHMENT, stencil_.id(), 0);
+        passes::checkFramebuffer(fbo_, "adaptive lit bits");
     }
+    const GLint all = 1;
+    glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &all);
     planes_ = std::max(1, (views + 31) / 32);
     const size_t need = size_t(planes_) * size_t(width_) * size_t(height_);
     if (need > capacity_ || !bits_.id()) {
@@ -41,6 +48,47 @@ void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
     const GLuint zero = 0;
     glClearNamedBufferSubData(bits_.id(), GL_R32UI, 0, GLsizeiptr(need * sizeof(GLuint)),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
+                            float normal_offset, float texel_size, const LitRegion* region) {
+    const GLint none = 0, all = 1;
+    glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, region ? &none : &all);
+    if (!region) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    const gl::Program& p = region_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_LIT_REGION, region->pyramid);
+    gl::setUniform(p, "u_normal_offset", normal_offset);
+    gl::setUniform(p, "u_texel_size", texel_size);
+    gl::setUniform(p, "u_region_size", region->size);
+    gl::setUniform(p, "u_region_levels", region->levels);
+    gl::setUniform(p, "u_win_lo", region->window.lo);
+    gl::setUniform(p, "u_texel", region->window.size / static_cast<float>(region->size));
+    gl::setUniform(p, "u_near", region->window.near);
+    gl::setUniform(p, "u_light_half", 0.5f * light.size);
+    passes::setLightFrameUniforms(p, light);
+    if (!marked_) marked_ = gl::createQuery(GL_SAMPLES_PASSED, "adaptive lit region pixels");
+    glBeginQuery(GL_SAMPLES_PASSED, marked_.id());
+    fullscreen_.draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+    glDisable(GL_STENCIL_TEST);
+    glUseProgram(0);
+}
+
+double LitBits::markedPixels() const {
+    if (!marked_) return 0.0;
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(marked_.id(), GL_QUERY_RESULT, &n);
+    return static_cast<double>(n);
 }
 
 void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch,
@@ -57,7 +105,11 @@ void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch&
     gl::setUniform(test_program_, "u_count", std::min(count, 32));
     gl::setUniform(test_program_, "u_width", width_);
     gl::setUniform(test_program_, "u_pixels", width_ * height_);
+    glEnable(GL_STENCIL_TEST);  // only the pixels markLitRegion() left
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     fullscreen_.draw();
+    glDisable(GL_STENCIL_TEST);
     // The next batch's test ORs into the same words; the readback and evaluation read them.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);

@@ -8,12 +8,21 @@
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gbuffer.h"
+#include "renderer/passes/light_windows.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/scene/scene.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/adaptive/shadow_bits.h"
 
 namespace penumbra::techniques::adaptive {
+
+// The casters seen from the light's centre: a min/max pyramid of their distances from the
+// light's plane (RG32F mips, bitmask::DepthRanges' HSM) through WINDOW.
+struct LitRegion {
+    GLuint pyramid = 0;
+    int size = 0, levels = 0;
+    passes::LightWindow window;
+};
 
 // The bits (set: shadowed) of up to 32 x planes views per pixel, in a storage buffer (plane-major,
 // lit_bits.frag); the comparisons read them back at a stride and lit_eval.frag weights them.
@@ -24,8 +33,16 @@ public:
     LitBits(const LitBits&) = delete;
     LitBits& operator=(const LitBits&) = delete;
 
-    // Sizes the bits for GBUFFER and at most VIEWS views, all clear (lit everywhere).
+    // Sizes the bits for GBUFFER and at most VIEWS views, all clear (lit everywhere), and marks
+    // every pixel for test().
     void begin(const passes::GBuffer& gbuffer, int views);
+    // With REGION, marks the pixels of GBUFFER some caster may shadow (lit_region.frag, with
+    // the tests' NORMAL_OFFSET in texels of TEXEL_SIZE per unit distance), and test() tests only
+    // those; nullptr: every pixel (begin()'s).
+    void markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
+                       float normal_offset, float texel_size, const LitRegion* region);
+    // The pixels the last markLitRegion() marked (blocking).
+    double markedPixels() const;
     // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's
     // layers 0..COUNT-1 (views bound at kBindingSampleViews/kBindingSampleLookups): hard tests
     // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's.
@@ -43,8 +60,11 @@ private:
     gl::Program test_program_;
     gl::Program eval_program_;
     passes::Fullscreen fullscreen_;
-    gl::Framebuffer fbo_;  // no attachments: the G-buffer's size, for the test passes
+    gl::Framebuffer fbo_;  // the G-buffer's size, only a stencil: for the test passes
     gl::Buffer bits_;
+    gl::Program region_program_;
+    gl::Texture stencil_;  // 1: the pixels test() shades
+    gl::Query marked_;     // markLitRegion()'s pixels
     size_t capacity_ = 0;  // words in bits_
     int width_ = 0, height_ = 0, planes_ = 0;
     unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
