@@ -28,12 +28,9 @@ bool certainlyLit(vec3 p) {
     vec3 d = p - u_light_centre;
     vec3 c = vec3(dot(d, u_light_right), dot(d, u_light_up), dot(d, u_light_forward));
     if (c.z <= u_near) return true;  // nearer than every caster
-    vec2 mid = c.xy / c.z;
-    vec2 h = u_light_half * (1.0 / u_near - 1.0 / c.z);
-    vec4 a = vec4((mid - h - u_win_lo) / u_texel, (mid + h - u_win_lo) / u_texel) +
+    vec4 a = lightSearchArea(c, u_near, u_light_half, u_win_lo, u_texel) +
              vec4(-2.0, -2.0, 2.0, 2.0);
-    float n = float(u_region_size);
-    if (a.z < 0.0 || a.w < 0.0 || a.x >= n || a.y >= n) return true;  // no caster there
+    if (areaMissesMap(a, u_region_size)) return true;  // no caster there
     ivec4 r = clamp(ivec4(floor(a)), ivec4(0), ivec4(u_region_size - 1));
     return pyramidRange(u_region, r, pyramidLevel(r, u_region_levels)).x >= c.z;
 }

@@ -89,14 +89,10 @@ float biasedDepth(vec3 p) { return p.z * (1.0 - u_depth_bias); }
 // The search area of P at depth Z: the light pyramid through P cut at Z, in level-0 texels
 // (x0, y0, x1, y1), unclipped.
 vec4 searchArea(vec3 p, float z) {
-    vec2 c = p.xy / p.z;
-    vec2 h = u_light_half * (1.0 / z - 1.0 / p.z);
-    return vec4((c - h - u_win_lo) / u_texel, (c + h - u_win_lo) / u_texel);
+    return lightSearchArea(p, z, u_light_half, u_win_lo, u_texel);
 }
 
-bool areaMissesMap(vec4 a) {
-    return a.z < 0.0 || a.w < 0.0 || a.x >= float(u_map_size) || a.y >= float(u_map_size);
-}
+bool areaMissesMap(vec4 a) { return areaMissesMap(a, u_map_size); }
 
 bool areaInsideMap(vec4 a) {
     return a.x >= 0.0 && a.y >= 0.0 && a.z < float(u_map_size) && a.w < float(u_map_size);

@@ -81,7 +81,6 @@ void Adaptive::render(frame::FrameContext& ctx) {
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, zero);
-    marked_ = false;
     if (litPath()) {
         lit_bits_->begin(ctx.gbuffer, max_maps_);
         renderLitRegion(ctx);
@@ -173,9 +172,8 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
         region.pyramid = region_->hsm().id();
         region.size = region_->mapSize();
         region.levels = region_->levels();
-        lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, &region);
+        lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, region);
     });
-    marked_ = true;
 }
 
 // Adds the light's maps, weighted, into its visibility.
@@ -237,8 +235,8 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     // The most maps alive at once: a batch on the lit path, else the array's layers.
     const int held = litPath() ? scratch_->layers() : maps_ ? maps_->layers() : 0;
     st["maps_held"] = std::max(st.value("maps_held", 0), held);
-    if (region_ && marked_)  // skip_lit: the pixels tested against the maps
-        st["tested_pixels"] = st.value("tested_pixels", 0.0) + lit_bits_->markedPixels();
+    if (const auto tested = lit_bits_ ? lit_bits_->markedPixels() : std::nullopt)  // skip_lit
+        st["tested_pixels"] = st.value("tested_pixels", 0.0) + *tested;
     if (error_metric_)
         st["estimated_error"] = std::max(st.value("estimated_error", 0.0), r.estimated_error);
 }
@@ -289,11 +287,11 @@ const TechniqueInfo kAdaptiveTechnique = {
         }
         out.push_back(
             {"technique.map_size", "the light-view G-buffer", saturatingProduct({m, m, 48})});
-        // The lit region's distance pyramid (RG32F, 4/3 for its mips) and its depth buffer.
+        // The lit region's distance pyramid (RG32F, 4/3 for its mips) and its 32-bit depth.
         const auto r = static_cast<std::uint64_t>(adaptive::regionSize(p.get(kMapSize)));
         if (p.get(adaptive::kSkipLit))
             out.push_back({"technique.map_size", "the lit region's pyramid",
-                           saturatingProduct({r, r, 8 + 8 / 3 + 4})});
+                           saturatingProduct({r, r, 8 * 4 / 3 + 4})});
         return out;
     }};
 

@@ -267,7 +267,6 @@ private:
     bool rss_estimate_;
     bool bits_storage_;    // storage "auto"
     bool skip_lit_;        // the lit path: pixels no caster can shadow are not tested
-    bool marked_ = false;  // this light's lit region was marked (skip_lit)
     double shadowed_ = 0;  // the bits path: pixels any root corner shadows, this light
     bool vertex_layer_ = false;
     Subdivision subdivision_;

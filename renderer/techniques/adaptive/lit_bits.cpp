@@ -38,6 +38,7 @@ void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
     }
     const GLint all = 1;
     glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &all);
+    region_marked_ = false;
     planes_ = std::max(1, (views + 31) / 32);
     const size_t need = size_t(planes_) * size_t(width_) * size_t(height_);
     if (need > capacity_ || !bits_.id()) {
@@ -51,10 +52,9 @@ void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
 }
 
 void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
-                            float normal_offset, float texel_size, const LitRegion* region) {
-    const GLint none = 0, all = 1;
-    glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, region ? &none : &all);
-    if (!region) return;
+                            float normal_offset, float texel_size, const LitRegion& region) {
+    const GLint none = 0;
+    glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &none);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -66,14 +66,14 @@ void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLig
     glUseProgram(p.id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_LIT_REGION, region->pyramid);
+    glBindTextureUnit(ADAPTIVE_UNIT_LIT_REGION, region.pyramid);
     gl::setUniform(p, "u_normal_offset", normal_offset);
     gl::setUniform(p, "u_texel_size", texel_size);
-    gl::setUniform(p, "u_region_size", region->size);
-    gl::setUniform(p, "u_region_levels", region->levels);
-    gl::setUniform(p, "u_win_lo", region->window.lo);
-    gl::setUniform(p, "u_texel", region->window.size / static_cast<float>(region->size));
-    gl::setUniform(p, "u_near", region->window.near);
+    gl::setUniform(p, "u_region_size", region.size);
+    gl::setUniform(p, "u_region_levels", region.levels);
+    gl::setUniform(p, "u_win_lo", region.window.lo);
+    gl::setUniform(p, "u_texel", region.window.size / static_cast<float>(region.size));
+    gl::setUniform(p, "u_near", region.window.near);
     gl::setUniform(p, "u_light_half", 0.5f * light.size);
     passes::setLightFrameUniforms(p, light);
     if (!marked_) marked_ = gl::createQuery(GL_SAMPLES_PASSED, "adaptive lit region pixels");
@@ -82,10 +82,11 @@ void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLig
     glEndQuery(GL_SAMPLES_PASSED);
     glDisable(GL_STENCIL_TEST);
     glUseProgram(0);
+    region_marked_ = true;
 }
 
-double LitBits::markedPixels() const {
-    if (!marked_) return 0.0;
+std::optional<double> LitBits::markedPixels() const {
+    if (!region_marked_) return std::nullopt;
     GLuint64 n = 0;
     glGetQueryObjectui64v(marked_.id(), GL_QUERY_RESULT, &n);
     return static_cast<double>(n);

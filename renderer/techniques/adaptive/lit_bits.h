@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
@@ -36,13 +37,13 @@ public:
     // Sizes the bits for GBUFFER and at most VIEWS views, all clear (lit everywhere), and marks
     // every pixel for test().
     void begin(const passes::GBuffer& gbuffer, int views);
-    // With REGION, marks the pixels of GBUFFER some caster may shadow (lit_region.frag, with
-    // the tests' NORMAL_OFFSET in texels of TEXEL_SIZE per unit distance), and test() tests only
-    // those; nullptr: every pixel (begin()'s).
+    // Marks the pixels of GBUFFER some caster in REGION may shadow (lit_region.frag, with the
+    // tests' NORMAL_OFFSET in texels of TEXEL_SIZE per unit distance): test() tests only those
+    // until the next begin().
     void markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
-                       float normal_offset, float texel_size, const LitRegion* region);
-    // The pixels the last markLitRegion() marked (blocking).
-    double markedPixels() const;
+                       float normal_offset, float texel_size, const LitRegion& region);
+    // The pixels markLitRegion() marked since begin() (blocking); none when it was not called.
+    std::optional<double> markedPixels() const;
     // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's
     // layers 0..COUNT-1 (views bound at kBindingSampleViews/kBindingSampleLookups): hard tests
     // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's.
@@ -63,9 +64,10 @@ private:
     gl::Framebuffer fbo_;  // the G-buffer's size, only a stencil: for the test passes
     gl::Buffer bits_;
     gl::Program region_program_;
-    gl::Texture stencil_;  // 1: the pixels test() shades
-    gl::Query marked_;     // markLitRegion()'s pixels
-    size_t capacity_ = 0;  // words in bits_
+    gl::Texture stencil_;         // 1: the pixels test() shades
+    gl::Query marked_;            // markLitRegion()'s pixels
+    bool region_marked_ = false;  // markLitRegion() since begin()
+    size_t capacity_ = 0;         // words in bits_
     int width_ = 0, height_ = 0, planes_ = 0;
     unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
 };
