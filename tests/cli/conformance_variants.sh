@@ -19,6 +19,11 @@ python3 -c 'import json, sys; sys.exit(json.load(open(sys.argv[1]))["params"]["j
 [ "$(cut -d, -f2 out2/results.csv | tail -n +2 | tr '\n' ' ')" = "hard ref2 " ] ||
     fail "--techniques hard,ref2"
 
+# A JSON value with commas stays one override.
+"${conf[@]}" --scenes "$scene" --out out3 --variant 'far=hard,camera.position=[0, 3, 6]' \
+    >/dev/null || fail "a list value"
+grep -q '^rand7,far,' out3/results.csv || fail "the list-valued variant has no result"
+
 expect_exit 2 "'bad': expected LABEL=TECHNIQUE" -- "${conf[@]}" --variant bad --out r
 expect_exit 2 "'nosuch': not a technique" -- "${conf[@]}" --variant x=nosuch --out r
 expect_exit 2 "'samples': expected KEY=VALUE" -- "${conf[@]}" --variant x=reference,samples --out r
