@@ -111,8 +111,8 @@ GpuScene::GpuScene(const scene::Scene& scene) {
 
 void GpuScene::update(const scene::Scene& scene) {
     objects_.clear();
-    caster_bounds_ = {};
-    scene_bounds_ = {};
+    caster_boxes_.clear();
+    scene_boxes_.clear();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const auto& o = scene.objects[i];
         GpuObject g;
@@ -123,8 +123,8 @@ void GpuScene::update(const scene::Scene& scene) {
         g.shadow = o.shadow;
         g.id = static_cast<int>(i);
         g.world_bounds = g.model->bounds.transformed(o.transform);
-        scene_bounds_.extend(g.world_bounds);
-        if (scene::castsShadow(o.shadow)) caster_bounds_.extend(g.world_bounds);
+        scene_boxes_.push_back(g.world_bounds);
+        if (scene::castsShadow(o.shadow)) caster_boxes_.push_back(g.world_bounds);
         objects_.push_back(g);
     }
 }

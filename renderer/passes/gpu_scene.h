@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -31,6 +32,10 @@ struct Bounds {
     }
     Bounds transformed(const glm::mat4& m) const;
 };
+
+// World boxes, one per object: views are fitted to these rather than to their union, whose
+// corners can lie where no object does (behind a tilted light's plane).
+using Boxes = std::span<const Bounds>;
 
 struct GpuDraw {
     GLsizei count = 0;   // indices
@@ -67,9 +72,10 @@ public:
     void update(const scene::Scene& scene);
 
     const std::vector<GpuObject>& objects() const { return objects_; }
-    // World bounds of the objects that cast shadows (ShadowRole Both or Occluder).
-    const Bounds& casterBounds() const { return caster_bounds_; }
-    const Bounds& sceneBounds() const { return scene_bounds_; }
+    // World bounds of each object that casts shadows (ShadowRole Both or Occluder), and of
+    // every object.
+    Boxes casterBoxes() const { return caster_boxes_; }
+    Boxes sceneBoxes() const { return scene_boxes_; }
     // Per object of the scene (by its index, the G-buffer id): 1 when it casts shadows (role
     // both or occluder), else 0; an SSBO of int for glsl/common/caster_flags.glsl.
     const gl::Buffer& casterFlags() const { return caster_flags_; }
@@ -87,7 +93,7 @@ public:
 private:
     std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;
     std::vector<GpuObject> objects_;
-    Bounds caster_bounds_, scene_bounds_;
+    std::vector<Bounds> caster_boxes_, scene_boxes_;
     gl::Buffer caster_flags_;
 };
 

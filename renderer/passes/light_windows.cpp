@@ -17,18 +17,33 @@ glm::mat4 LightWindow::viewProj(const scene::RectLight& light) const {
     return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far) * view;
 }
 
-LightWindow windowOf(const scene::RectLight& light, const Bounds& bounds) {
+std::vector<glm::vec3> cornersInFront(Boxes boxes, const glm::vec3& origin,
+                                      const glm::vec3& forward) {
+    std::vector<glm::vec3> out;
+    out.reserve(boxes.size() * 8);
+    for (const Bounds& b : boxes) {
+        if (b.empty()) continue;
+        glm::vec3 c[8];
+        bool in_front = false;
+        for (int i = 0; i < 8; ++i) {
+            c[i] = b.corner(i) - origin;
+            in_front |= glm::dot(c[i], forward) > 0.0f;
+        }
+        if (in_front) out.insert(out.end(), c, c + 8);
+    }
+    return out;
+}
+
+LightWindow windowOf(const scene::RectLight& light, Boxes boxes) {
     LightWindow w;
-    if (bounds.empty()) return w;
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
-    glm::vec3 corners[8];
+    const std::vector<glm::vec3> corners = cornersInFront(boxes, light.position, f);
+    if (corners.empty()) return w;
     float zmin = 1e30f, zmax = -1e30f;
-    for (int i = 0; i < 8; ++i) {
-        corners[i] = bounds.corner(i) - light.position;
-        const float z = glm::dot(corners[i], f);
+    for (const auto& c : corners) {
+        const float z = glm::dot(c, f);
         zmin = std::min(zmin, z), zmax = std::max(zmax, z);
     }
-    if (zmax <= 0.0f) return w;
     w.near = std::max(zmin, zmax * 1e-4f);
     w.far = zmax * 1.0001f + 1e-5f;
     glm::vec2 lo(1e30f), hi(-1e30f);
@@ -42,7 +57,7 @@ LightWindow windowOf(const scene::RectLight& light, const Bounds& bounds) {
     return w;
 }
 
-LightWindow occluderWindow(const scene::RectLight& light, const Bounds& casters) {
+LightWindow occluderWindow(const scene::RectLight& light, Boxes casters) {
     LightWindow w = windowOf(light, casters);
     if (w.empty()) return w;
     const float aspect = light.size.x / light.size.y;

@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 #include "renderer/passes/gpu_scene.h"
 #include "renderer/scene/scene.h"
 
@@ -20,11 +22,16 @@ struct LightWindow {
     glm::mat4 viewProj(const scene::RectLight& light) const;
 };
 
-// The window that bounds BOUNDS seen from the light's centre (empty when nothing lies in front).
-LightWindow windowOf(const scene::RectLight& light, const Bounds& bounds);
+// The corners, relative to ORIGIN, of the boxes that reach in front of the plane through ORIGIN
+// normal to FORWARD: a box wholly behind the light's plane lies on no ray the light sends.
+std::vector<glm::vec3> cornersInFront(Boxes boxes, const glm::vec3& origin,
+                                      const glm::vec3& forward);
+
+// The window that bounds BOXES seen from the light's centre (empty when none lies in front).
+LightWindow windowOf(const scene::RectLight& light, Boxes boxes);
 
 // The occluder-map window: the casters' window grown along one axis so that its aspect ratio,
 // and so that of every texel of a square map, is the light's.
-LightWindow occluderWindow(const scene::RectLight& light, const Bounds& casters);
+LightWindow occluderWindow(const scene::RectLight& light, Boxes casters);
 
 }  // namespace penumbra::passes

@@ -6,42 +6,34 @@
 
 #include "renderer/core/error.h"
 #include "renderer/passes/bindings.h"
+#include "renderer/passes/light_windows.h"
 
 namespace penumbra::passes {
 namespace {
 constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
 }
 
-SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
-                          const Bounds& casters, float weight, int map_size) {
+SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point, Boxes casters,
+                          float weight, int map_size) {
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
+    const std::vector<glm::vec3> corners = cornersInFront(casters, point, f);
     float zmin = 1e30f, zmax = -1e30f;
     float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
-    if (!casters.empty()) {
-        for (int i = 0; i < 8; ++i) {
-            const glm::vec3 c = casters.corner(i);
-            float z = glm::dot(c - point, f);
-            zmin = std::min(zmin, z);
-            zmax = std::max(zmax, z);
-        }
+    for (const auto& c : corners) {
+        const float z = glm::dot(c, f);
+        zmin = std::min(zmin, z), zmax = std::max(zmax, z);
     }
-    if (casters.empty() || zmax <= 0.0f) {
-        zmin = 0.01f, zmax = 1.0f;  // nothing in front of the light: any frustum is empty
-    }
+    if (corners.empty()) zmin = 0.01f, zmax = 1.0f;  // nothing in front: any frustum is empty
     // A margin on both planes: a flat caster parallel to the light lies exactly at zmin, where
     // rasterisation would clip it away.
     const float margin = 0.01f * std::max(zmax - zmin, std::fabs(zmin)) + 1e-5f;
     const float near = std::max(zmin - margin, zmax * 1e-4f);
     const float far = zmax + margin;
-    if (!casters.empty()) {
-        for (int i = 0; i < 8; ++i) {
-            const glm::vec3 c = casters.corner(i);
-            glm::vec3 d = c - point;
-            float z = std::max(glm::dot(d, f), near);
-            float x = glm::dot(d, r) / z, y = glm::dot(d, u) / z;
-            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
-            lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
-        }
+    for (const auto& c : corners) {
+        const float z = std::max(glm::dot(c, f), near);
+        const float x = glm::dot(c, r) / z, y = glm::dot(c, u) / z;
+        lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
+        lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
     }
     if (!(lo_x < hi_x)) lo_x = -1, hi_x = 1;
     if (!(lo_y < hi_y)) lo_y = -1, hi_y = 1;

@@ -32,9 +32,10 @@ struct SampleView {
 static_assert(sizeof(SampleView) == SAMPLE_VIEW_SIZE, "SampleView: std430 size (mat4, 6 vec4)");
 static_assert(sizeof(SampleView) == 160);
 
-// The view from POINT looking along the light's forward axis, frustum fitted to CASTERS.
-SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point,
-                          const Bounds& casters, float weight, int map_size);
+// The view from POINT (on the light) looking along the light's forward axis, frustum fitted to
+// the CASTERS boxes that reach in front of the light.
+SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point, Boxes casters,
+                          float weight, int map_size);
 
 // A depth-texture array of LAYERS maps of MAP_SIZE^2 and the light depth program that fills it.
 class ShadowMapBatch {

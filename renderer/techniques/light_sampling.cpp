@@ -42,7 +42,7 @@ int LightSampler::render(frame::FrameContext& ctx, std::span<const LightSample> 
         glm::vec3 p =
             corners[0] + (corners[1] - corners[0]) * s.uv.x + (corners[3] - corners[0]) * s.uv.y;
         views_.push_back(
-            passes::makeSampleView(light, p, ctx.gpu.casterBounds(), s.weight, settings_.map_size));
+            passes::makeSampleView(light, p, ctx.gpu.casterBoxes(), s.weight, settings_.map_size));
     }
     views_buffer_.upload(views_);
     ctx.bindOutput();

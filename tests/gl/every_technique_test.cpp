@@ -18,11 +18,16 @@ using penumbra::testing::renderScene;
 
 namespace {
 
-// Each technique's bounds, at its defaults and 128 x 96, on two small scenes:
+// Each technique's bounds, at its defaults and 128 x 96, on three small scenes:
 // - closed_form: the shadow-region MAE of visibility over the floor against the closed form of
 //   a 0.8 m square occluder (role occluder) under a parallel 1 m square light;
 // - both_box: the floor's shadow-region MAE against `exact` (N = 32) under a box of the default
-//   role `both` lit by a 0.5 m light, i.e. the floor hidden from the light's centre by a caster.
+//   role `both` lit by a 0.5 m light, i.e. the floor hidden from the light's centre by a caster;
+// - tilted_light_union: the floor's shadow-region MAE against `exact` (N = 32) on random scene
+//   64 of scripts/random-scenes (nobody tuned on it): a tilted light whose casters' union box
+//   reaches behind the light's plane, though no caster does. Windows fitted to that box had a
+//   near plane at 1e-4 of the far and hit the 80-degree clamp: css found no blocker and lit
+//   the whole floor (0.31 at 160 x 120), the others lost resolution.
 // Each bound is the value measured when it was written (printed by this test; run
 // `build/tests/penumbra_gl_tests --gtest_filter='Registered/EveryTechnique*'`), times 1.25 and
 // at least 0.002 above it: room for another rasteriser's texel edges, not for a regression.
@@ -30,27 +35,29 @@ namespace {
 struct Bounds {
     double closed_form;
     double both_box;
+    double tilted_union;
 };
 const std::map<std::string, Bounds>& bounds() {
     static const std::map<std::string, Bounds> table = {
-        // hard is the baseline: one sample, so the whole penumbra is wrong (measured 0.233 and
-        // 0.166); its bounds say only that it draws the shadow where it belongs.
-        {"hard", {0.29, 0.21}},
-        {"reference", {0.0067, 0.0054}},  // measured 0.0047, 0.0034
+        // hard is the baseline: one sample, so the whole penumbra is wrong (measured 0.233,
+        // 0.166 and 0.221); its bounds say only that it draws the shadow where it belongs.
+        {"hard", {0.29, 0.21, 0.28}},
+        {"reference", {0.0067, 0.0054, 0.0177}},  // measured 0.0047, 0.0034, 0.0141
         // exact at its default N = 16 against the closed form and against exact N = 32: the
-        // noise of 16 x 16 stratified rays (measured 0.0049, 0.0036).
-        {"exact", {0.0069, 0.0056}},
-        {"adaptive", {0.0178, 0.0148}},  // measured 0.0142, 0.0118 (9 x 9), 0.0106, 0.0095
+        // noise of 16 x 16 stratified rays (measured 0.0049, 0.0036, 0.0050).
+        {"exact", {0.0069, 0.0056, 0.0070}},
+        {"adaptive", {0.0178, 0.0148, 0.0175}},  // measured 0.0067, 0.0106, 0.0140
         // ssm back-projects each occluder texel onto the light exactly; with the default light
         // sample masks (256 samples) a flat occluder parallel to the light is exact to their
         // quantisation (measured 0.0075; below 0.0001 with the paper's sum, accumulate=area).
         // both_box: 0.0039 (0.0173 with the sum two-sided, the far side's map holding the
-        // box's walls, back faces from the light's centre, as flat patches).
-        {"ssm", {0.0095, 0.0059}},
-        {"bitmask", {0.0063, 0.0125}},  // measured 0.0043, 0.0100
+        // box's walls, back faces from the light's centre, as flat patches). tilted_light_union:
+        // 0.0329.
+        {"ssm", {0.0095, 0.0059, 0.0412}},
+        {"bitmask", {0.0063, 0.0125, 0.0553}},  // measured 0.0043, 0.0038, 0.0442
         // css assumes one blocker depth per kernel; the box's sides break that on both_box
-        // (Annen et al. 2008, section 5; measured 0.0092, 0.0307).
-        {"css", {0.0115, 0.0384}},
+        // (Annen et al. 2008, section 5; measured 0.0092, 0.0307). tilted_light_union: 0.0834.
+        {"css", {0.0115, 0.0384, 0.1043}},
     };
     return table;
 }
@@ -64,13 +71,16 @@ std::vector<penumbra::scene::Override> withTechnique(const std::string& name) {
     return o;
 }
 
-const penumbra::output::Image& exactBothBox() {
-    static const penumbra::output::Image img = [] {
+// `exact` (N = 32) on SCENE, rendered once per scene.
+const penumbra::output::Image& exactOf(const std::string& scene) {
+    static std::map<std::string, penumbra::output::Image> images;
+    auto it = images.find(scene);
+    if (it == images.end()) {
         auto o = kSize;
         o.push_back({"technique", penumbra::testing::kGroundTruth});
-        return renderScene("both_box.json", o);
-    }();
-    return img;
+        it = images.emplace(scene, renderScene(scene, o)).first;
+    }
+    return it->second;
 }
 
 bool sameBytes(const std::vector<float>& a, const std::vector<float>& b) {
@@ -105,11 +115,18 @@ TEST_P(EveryTechniqueGL, RendersValidDeterministicVisibilityWithinItsBounds) {
         EXPECT_TRUE(sameBytes(channel(box, c), channel(again, c))) << c << " differs";
 
     const double closed = penumbra::testing::closedFormShadowMae(img, 0.5, 500);
-    const double both = penumbra::testing::floorShadowMae(exactBothBox(), box, 300);
-    std::printf("%s: closed form %.4f (bound %.4f), both_box vs exact %.4f (bound %.4f)\n",
-                name.c_str(), closed, it->second.closed_form, both, it->second.both_box);
+    const double both = penumbra::testing::floorShadowMae(exactOf("both_box.json"), box, 300);
+    const double tilted = penumbra::testing::floorShadowMae(
+        exactOf("tilted_light_union.json"),
+        renderScene("tilted_light_union.json", withTechnique(name)), 300);
+    std::printf(
+        "%s: closed form %.4f (bound %.4f), both_box vs exact %.4f (bound %.4f), "
+        "tilted_light_union vs exact %.4f (bound %.4f)\n",
+        name.c_str(), closed, it->second.closed_form, both, it->second.both_box, tilted,
+        it->second.tilted_union);
     EXPECT_LE(closed, it->second.closed_form);
     EXPECT_LE(both, it->second.both_box);
+    EXPECT_LE(tilted, it->second.tilted_union);
 }
 
 std::vector<std::string> registeredNames() {

@@ -37,11 +37,11 @@ Built build(const penumbra::scene::Scene& s, Build how, int layers, int size = 2
     penumbra::testing::glInfo();
     const GpuScene gpu(s);
     const auto& light = s.lights.at(0);
-    penumbra::passes::Bounds receivers;
+    std::vector<penumbra::passes::Bounds> receivers;
     for (const auto& o : gpu.objects())
-        if (penumbra::scene::receivesShadow(o.shadow)) receivers.extend(o.world_bounds);
+        if (penumbra::scene::receivesShadow(o.shadow)) receivers.push_back(o.world_bounds);
     const auto occ =
-        ssm::withNearMargin(penumbra::passes::occluderWindow(light, gpu.casterBounds()));
+        ssm::withNearMargin(penumbra::passes::occluderWindow(light, gpu.casterBoxes()));
     const auto soft = ssm::softShadowWindow(light, occ, receivers);
     const penumbra::passes::LightDepthView view{soft.viewProj(light), soft.near,
                                                 1.0f / (soft.far - soft.near)};

@@ -160,10 +160,10 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
     if (!region_) return;
     const scene::RectLight& light = ctx.currentLight();
     LitRegion region;
-    region.window = passes::occluderWindow(light, ctx.gpu.casterBounds());
+    region.window = passes::occluderWindow(light, ctx.gpu.casterBoxes());
     if (region.window.empty()) return;  // no caster: the tests find none either
     // The tests' normal offset scales with view 0's texel size; the centre's is nearly the same.
-    const float texel = passes::makeSampleView(light, light.position, ctx.gpu.casterBounds(), 1.0f,
+    const float texel = passes::makeSampleView(light, light.position, ctx.gpu.casterBoxes(), 1.0f,
                                                settings_.map_size)
                             .params.y;
     ctx.pass("adaptive_lit_region", [&] {

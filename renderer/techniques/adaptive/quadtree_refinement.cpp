@@ -80,7 +80,7 @@ std::vector<adaptive::QuadtreeCell> Adaptive::splitCells(
 passes::CameraMatrices Adaptive::lightCentreView(const frame::FrameContext& ctx) const {
     const scene::RectLight& light = ctx.currentLight();
     const passes::SampleView v = passes::makeSampleView(
-        light, light.position, ctx.gpu.casterBounds(), 1.0f, settings_.map_size);
+        light, light.position, ctx.gpu.casterBoxes(), 1.0f, settings_.map_size);
     const float n = v.forward.w;
     const float l = v.frustum.x, b = v.frustum.y;
     const float r = l + 1.0f / v.frustum.z, t = b + 1.0f / v.frustum.w;
@@ -102,7 +102,7 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
         glm::vec3 p =
             corners[0] + (corners[1] - corners[0]) * uv.x + (corners[3] - corners[0]) * uv.y;
         views_.push_back(
-            passes::makeSampleView(light, p, ctx.gpu.casterBounds(), 1.0f, settings_.map_size));
+            passes::makeSampleView(light, p, ctx.gpu.casterBoxes(), 1.0f, settings_.map_size));
     }
     const int n = static_cast<int>(views_.size());
     if (first == n) return;

@@ -110,7 +110,7 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
 
 void Bitmask::render(frame::FrameContext& ctx) {
     const scene::RectLight& light = ctx.currentLight();
-    const passes::LightWindow window = passes::occluderWindow(light, ctx.gpu.casterBounds());
+    const passes::LightWindow window = passes::occluderWindow(light, ctx.gpu.casterBoxes());
     const int width = ctx.gbuffer.width(), height = ctx.gbuffer.height();
     if (!targets_ || targets_->width() != width || targets_->height() != height)
         targets_ = std::make_unique<bitmask::LoqTargets>(width, height);

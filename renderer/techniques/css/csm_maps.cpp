@@ -10,8 +10,8 @@
 
 namespace penumbra::techniques::css {
 
-passes::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
-                              const passes::Bounds& scene) {
+passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes casters,
+                              passes::Boxes scene) {
     passes::LightWindow w = passes::windowOf(light, casters);
     if (w.empty()) return w;
     w.far = std::max(w.far, passes::windowOf(light, scene).far);

@@ -21,8 +21,8 @@ constexpr int basisLayers(int order) {
 
 // The light-centred view of the map: the casters' window (x, y) with a depth range from the
 // nearest caster to the farthest point of the scene, so every receiver has depth in [0, 1].
-passes::LightWindow mapWindow(const scene::RectLight& light, const passes::Bounds& casters,
-                              const passes::Bounds& scene);
+passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes casters,
+                              passes::Boxes scene);
 
 // The depth normalisation of the map: real depths fill [m, 1 - m], m = min(shift + 0.5 / M,
 // 0.3), and empty texels hold 1. The Fourier test is periodic (period 2 in d - z) and rings

@@ -40,7 +40,7 @@ public:
         const CsmMaps::Filter filter = css::filterFor(settings_, light);
         ensureResources(filter);
         const passes::LightWindow window =
-            css::mapWindow(light, ctx.gpu.casterBounds(), ctx.gpu.sceneBounds());
+            css::mapWindow(light, ctx.gpu.casterBoxes(), ctx.gpu.sceneBoxes());
         const css::DepthRange range =
             css::depthRange(window, settings_.order, settings_.ring_shift);
         if (!window.empty()) {

@@ -136,12 +136,12 @@ void Ssm::renderOccluderMap(const passes::GpuScene& scene, const scene::RectLigh
 
 void Ssm::render(frame::FrameContext& ctx) {
     const scene::RectLight& light = ctx.currentLight();
-    passes::Bounds receiver_bounds;
+    std::vector<passes::Bounds> receivers;
     for (const auto& o : ctx.gpu.objects())
-        if (receives(o.shadow)) receiver_bounds.extend(o.world_bounds);
+        if (receives(o.shadow)) receivers.push_back(o.world_bounds);
     const LightWindow occ =
-        ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBounds()));
-    const LightWindow soft = ssm::softShadowWindow(light, occ, receiver_bounds);
+        ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBoxes()));
+    const LightWindow soft = ssm::softShadowWindow(light, occ, receivers);
     const bool shadowed = !occ.empty() && !soft.empty();
     const int sides = sideCount();
 

@@ -25,7 +25,7 @@ passes::LightWindow withNearMargin(passes::LightWindow w) {
 
 passes::LightWindow softShadowWindow(const scene::RectLight& light,
                                      const passes::LightWindow& occluders,
-                                     const passes::Bounds& receivers) {
+                                     passes::Boxes receivers) {
     passes::LightWindow r = withNearMargin(passes::windowOf(light, receivers));
     if (r.empty() || occluders.empty()) return {};
     const float k = std::max(1.0f / occluders.near - 1.0f / r.far, 0.0f);

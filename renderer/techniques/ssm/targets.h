@@ -30,7 +30,6 @@ passes::LightWindow withNearMargin(passes::LightWindow w);
 // half the light over the nearest occluder depth, less its value at the farthest receiver),
 // clipped to the receivers' window, with the receivers' depth range.
 passes::LightWindow softShadowWindow(const scene::RectLight& light,
-                                     const passes::LightWindow& occluders,
-                                     const passes::Bounds& receivers);
+                                     const passes::LightWindow& occluders, passes::Boxes receivers);
 
 }  // namespace penumbra::techniques::ssm

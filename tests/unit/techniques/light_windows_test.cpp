@@ -1,0 +1,83 @@
+// The light-centred windows and sample frusta are fitted to each caster's box, not to their
+// union: checked without a context on a tilted light whose casters' union reaches behind it.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "renderer/passes/light_windows.h"
+#include "renderer/passes/shadow_maps.h"
+
+using namespace penumbra;
+using passes::Bounds;
+
+namespace {
+
+Bounds box(glm::vec3 lo, glm::vec3 hi) {
+    Bounds b;
+    b.extend(lo), b.extend(hi);
+    return b;
+}
+
+// A light at (0, 3, 0) looking down at 45 degrees along (1, -1, 0): a point's depth in front of
+// it is (x - y + 3) / sqrt(2).
+scene::RectLight tiltedLight() {
+    scene::RectLight l;
+    l.position = {0, 3, 0};
+    l.target = {3, 0, 0};
+    l.up = {0, 0, -1};
+    l.size = {0.5f, 0.5f};
+    return l;
+}
+
+// Two casters in front of the light (nearest corners at depth 1.8 / sqrt(2) and 2.3 / sqrt(2))
+// whose union's corner (-1, 2.7, z) lies 0.7 / sqrt(2) behind the light's plane (rand64's case).
+std::vector<Bounds> casters() {
+    return {box({-1.0f, 0.0f, -0.1f}, {-0.8f, 0.2f, 0.1f}),
+            box({2.0f, 2.5f, -0.1f}, {2.2f, 2.7f, 0.1f})};
+}
+
+float depth(glm::vec3 p) {
+    return (p.x - p.y + 3.0f) / std::sqrt(2.0f);
+}
+
+}  // namespace
+
+TEST(LightWindows, FitTheCastersBoxesNotTheirUnionThatReachesBehindTheLight) {
+    const auto light = tiltedLight();
+    const auto boxes = casters();
+    Bounds all;
+    for (const auto& b : boxes) all.extend(b);
+    ASSERT_LT(depth({-1.0f, 2.7f, 0.0f}), 0.0f);  // the scene this test is about
+
+    const passes::LightWindow w = passes::windowOf(light, boxes);
+    EXPECT_NEAR(w.near, depth({-1.0f, 0.2f, 0.0f}), 1e-4f);
+    EXPECT_NEAR(w.far, depth({2.2f, 2.5f, 0.0f}), 1e-3f);
+    // Seen from the light's centre, the corners' tangents along right() span -3.8 / 1.8 (the
+    // corner (-1, 0.2)) to 1.9 / 2.5 (the corner (2.2, 2.7)); the union's window is clamped at
+    // 80 degrees (tangent 5.67).
+    EXPECT_NEAR(w.lo.x, -3.8f / 1.8f, 1e-4f);
+    EXPECT_NEAR(w.lo.x + w.size.x, 1.9f / 2.5f, 1e-4f);
+    const Bounds union_only[] = {all};
+    const passes::LightWindow u = passes::windowOf(light, union_only);
+    EXPECT_LT(u.near, 1e-3f);
+    EXPECT_GT(u.size.x, 5.0f);
+
+    // A sample frustum from a corner of the light sees the casters from no nearer than they are.
+    const glm::vec3 corner = light.corners()[0];
+    const passes::SampleView v = passes::makeSampleView(light, corner, boxes, 1.0f, 256);
+    EXPECT_GT(v.forward.w, 0.95f * (depth({-1.0f, 0.2f, 0.0f}) - 0.1f));
+    EXPECT_LT(1.0f / v.frustum.z, 3.2f);  // width of the window (tangent units)
+}
+
+TEST(LightWindows, ABoxWhollyBehindTheLightIsLeftOut) {
+    const auto light = tiltedLight();
+    auto boxes = casters();
+    const passes::LightWindow w = passes::windowOf(light, boxes);
+    boxes.push_back(box({-3.0f, 4.0f, -0.1f}, {-2.8f, 4.2f, 0.1f}));  // depth < 0 at every corner
+    const passes::LightWindow with = passes::windowOf(light, boxes);
+    EXPECT_EQ(with.near, w.near);
+    EXPECT_EQ(with.far, w.far);
+    EXPECT_EQ(with.lo, w.lo);
+    EXPECT_EQ(with.size, w.size);
+    EXPECT_TRUE(passes::windowOf(light, std::span(boxes).last(1)).empty());
+}
