@@ -2,13 +2,38 @@
 #include "renderer/passes/light_windows.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::passes {
 namespace {
-constexpr float kMaxTan = 5.67f;  // widest half-angle of a view: 80 degrees
+
+// A vertex of a convex polytope and the faces it lies on (bits 0-5 a box's, 6-9 the cuts').
+struct Vertex {
+    glm::vec3 p;
+    std::uint32_t faces;
+};
+
+// Cuts the polytope of vertices V to dot(N, p) >= 0 (plane bit BIT): the vertices inside, and
+// where an edge (two vertices sharing two faces) crosses the plane, its crossing.
+void cut(std::vector<Vertex>& v, const glm::vec3& n, std::uint32_t bit) {
+    std::vector<float> d(v.size());
+    for (size_t i = 0; i < v.size(); ++i) d[i] = glm::dot(n, v[i].p);
+    std::vector<Vertex> out;
+    for (size_t i = 0; i < v.size(); ++i)
+        if (d[i] >= 0.0f) out.push_back({v[i].p, v[i].faces | (d[i] == 0.0f ? bit : 0u)});
+    for (size_t i = 0; i < v.size(); ++i)
+        for (size_t j = 0; j < v.size(); ++j) {
+            const std::uint32_t shared = v[i].faces & v[j].faces;
+            if (d[i] > 0.0f && d[j] < 0.0f && std::popcount(shared) >= 2)
+                out.push_back({glm::mix(v[i].p, v[j].p, d[i] / (d[i] - d[j])), shared | bit});
+        }
+    v = std::move(out);
 }
+
+}  // namespace
 
 glm::mat4 LightWindow::viewProj(const scene::RectLight& light) const {
     const glm::vec3 f = light.forward();
@@ -17,42 +42,46 @@ glm::mat4 LightWindow::viewProj(const scene::RectLight& light) const {
     return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far) * view;
 }
 
-std::vector<glm::vec3> cornersInFront(Boxes boxes, const glm::vec3& origin,
-                                      const glm::vec3& forward) {
+std::vector<glm::vec3> visibleVertices(Boxes boxes, const scene::RectLight& light,
+                                       const glm::vec3& origin) {
+    const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
+    const float k = kMaxViewTan;
+    const glm::vec3 sides[4] = {{1, 0, k}, {-1, 0, k}, {0, 1, k}, {0, -1, k}};
     std::vector<glm::vec3> out;
-    out.reserve(boxes.size() * 8);
+    std::vector<Vertex> v;
     for (const Bounds& b : boxes) {
         if (b.empty()) continue;
-        glm::vec3 c[8];
-        bool in_front = false;
+        v.clear();
+        bool inside = true;
         for (int i = 0; i < 8; ++i) {
-            c[i] = b.corner(i) - origin;
-            in_front |= glm::dot(c[i], forward) > 0.0f;
+            const glm::vec3 d = b.corner(i) - origin;
+            const glm::vec3 p(glm::dot(d, r), glm::dot(d, u), glm::dot(d, f));
+            inside &= std::max(std::fabs(p.x), std::fabs(p.y)) <= k * p.z;
+            // Corner i lies on the faces min or max of each axis (bits 2 * axis + 0 or 1).
+            v.push_back(
+                {p, (1u << (i & 1)) | (1u << (2 + ((i >> 1) & 1))) | (1u << (4 + ((i >> 2) & 1)))});
         }
-        if (in_front) out.insert(out.end(), c, c + 8);
+        for (std::uint32_t s = 0; s < 4 && !inside && !v.empty(); ++s)
+            cut(v, sides[s], 1u << (6 + s));
+        for (const Vertex& x : v) out.push_back(x.p);
     }
     return out;
 }
 
 LightWindow windowOf(const scene::RectLight& light, Boxes boxes) {
     LightWindow w;
-    const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
-    const std::vector<glm::vec3> corners = cornersInFront(boxes, light.position, f);
-    if (corners.empty()) return w;
-    float zmin = 1e30f, zmax = -1e30f;
-    for (const auto& c : corners) {
-        const float z = glm::dot(c, f);
-        zmin = std::min(zmin, z), zmax = std::max(zmax, z);
-    }
+    const std::vector<glm::vec3> points = visibleVertices(boxes, light, light.position);
+    float zmin = 1e30f, zmax = 0.0f;
+    for (const auto& p : points) zmin = std::min(zmin, p.z), zmax = std::max(zmax, p.z);
+    if (zmax <= 0.0f) return w;
     w.near = std::max(zmin, zmax * 1e-4f);
     w.far = zmax * 1.0001f + 1e-5f;
     glm::vec2 lo(1e30f), hi(-1e30f);
-    for (const auto& c : corners) {
-        const float z = std::max(glm::dot(c, f), w.near);
-        const glm::vec2 p(glm::dot(c, r) / z, glm::dot(c, u) / z);
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const auto& p : points) {
+        const glm::vec2 t = glm::vec2(p) / std::max(p.z, w.near);
+        lo = glm::min(lo, t), hi = glm::max(hi, t);
     }
-    lo = glm::clamp(lo, -kMaxTan, kMaxTan), hi = glm::clamp(hi, -kMaxTan, kMaxTan);
+    lo = glm::clamp(lo, -kMaxViewTan, kMaxViewTan), hi = glm::clamp(hi, -kMaxViewTan, kMaxViewTan);
     w.lo = lo, w.size = hi - lo;
     return w;
 }

@@ -22,10 +22,15 @@ struct LightWindow {
     glm::mat4 viewProj(const scene::RectLight& light) const;
 };
 
-// The corners, relative to ORIGIN, of the boxes that reach in front of the plane through ORIGIN
-// normal to FORWARD: a box wholly behind the light's plane lies on no ray the light sends.
-std::vector<glm::vec3> cornersInFront(Boxes boxes, const glm::vec3& origin,
-                                      const glm::vec3& forward);
+// Tangent of the widest half-angle of a light-centred view: 80 degrees from the light's axis.
+inline constexpr float kMaxViewTan = 5.67f;
+
+// The vertices, in the frame of a view from ORIGIN (a point of the light's plane) along the
+// light's axes (x along right(), y along upAxis(), z along forward()), of the part of each box
+// inside the widest view (|x|, |y| <= kMaxViewTan z): what such a view can hold. A box that
+// reaches behind or beside the light is cut there, so the parts no map holds set no near plane.
+std::vector<glm::vec3> visibleVertices(Boxes boxes, const scene::RectLight& light,
+                                       const glm::vec3& origin);
 
 // The window that bounds BOXES seen from the light's centre (empty when none lies in front).
 LightWindow windowOf(const scene::RectLight& light, Boxes boxes);

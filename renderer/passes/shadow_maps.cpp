@@ -9,36 +9,29 @@
 #include "renderer/passes/light_windows.h"
 
 namespace penumbra::passes {
-namespace {
-constexpr float kMaxTan = 5.67f;  // widest half-angle of a sample frustum: 80 degrees
-}
-
 SampleView makeSampleView(const scene::RectLight& light, const glm::vec3& point, Boxes casters,
                           float weight, int map_size) {
     const glm::vec3 f = light.forward(), r = light.right(), u = light.upAxis();
-    const std::vector<glm::vec3> corners = cornersInFront(casters, point, f);
-    float zmin = 1e30f, zmax = -1e30f;
-    float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
-    for (const auto& c : corners) {
-        const float z = glm::dot(c, f);
-        zmin = std::min(zmin, z), zmax = std::max(zmax, z);
-    }
-    if (corners.empty()) zmin = 0.01f, zmax = 1.0f;  // nothing in front: any frustum is empty
+    const std::vector<glm::vec3> points = visibleVertices(casters, light, point);
+    float zmin = 1e30f, zmax = 0.0f;
+    for (const auto& p : points) zmin = std::min(zmin, p.z), zmax = std::max(zmax, p.z);
+    if (zmax <= 0.0f) zmin = 0.01f, zmax = 1.0f;  // nothing in front: any frustum is empty
     // A margin on both planes: a flat caster parallel to the light lies exactly at zmin, where
     // rasterisation would clip it away.
     const float margin = 0.01f * std::max(zmax - zmin, std::fabs(zmin)) + 1e-5f;
     const float near = std::max(zmin - margin, zmax * 1e-4f);
     const float far = zmax + margin;
-    for (const auto& c : corners) {
-        const float z = std::max(glm::dot(c, f), near);
-        const float x = glm::dot(c, r) / z, y = glm::dot(c, u) / z;
-        lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
-        lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+    float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
+    for (const auto& p : points) {
+        const float z = std::max(p.z, near);
+        lo_x = std::min(lo_x, p.x / z), hi_x = std::max(hi_x, p.x / z);
+        lo_y = std::min(lo_y, p.y / z), hi_y = std::max(hi_y, p.y / z);
     }
     if (!(lo_x < hi_x)) lo_x = -1, hi_x = 1;
     if (!(lo_y < hi_y)) lo_y = -1, hi_y = 1;
-    lo_x = std::clamp(lo_x, -kMaxTan, kMaxTan), hi_x = std::clamp(hi_x, -kMaxTan, kMaxTan);
-    lo_y = std::clamp(lo_y, -kMaxTan, kMaxTan), hi_y = std::clamp(hi_y, -kMaxTan, kMaxTan);
+    const float k = kMaxViewTan;
+    lo_x = std::clamp(lo_x, -k, k), hi_x = std::clamp(hi_x, -k, k);
+    lo_y = std::clamp(lo_y, -k, k), hi_y = std::clamp(hi_y, -k, k);
     // One texel of margin so casters on the edge are rasterised.
     const float mx = (hi_x - lo_x) / static_cast<float>(map_size);
     const float my = (hi_y - lo_y) / static_cast<float>(map_size);

@@ -53,14 +53,14 @@ TEST(LightWindows, FitTheCastersBoxesNotTheirUnionThatReachesBehindTheLight) {
     EXPECT_NEAR(w.near, depth({-1.0f, 0.2f, 0.0f}), 1e-4f);
     EXPECT_NEAR(w.far, depth({2.2f, 2.5f, 0.0f}), 1e-3f);
     // Seen from the light's centre, the corners' tangents along right() span -3.8 / 1.8 (the
-    // corner (-1, 0.2)) to 1.9 / 2.5 (the corner (2.2, 2.7)); the union's window is clamped at
-    // 80 degrees (tangent 5.67).
+    // corner (-1, 0.2)) to 1.9 / 2.5 (the corner (2.2, 2.7)); the union's window, even cut to
+    // the widest view, reaches 20 times nearer and spans that view.
     EXPECT_NEAR(w.lo.x, -3.8f / 1.8f, 1e-4f);
     EXPECT_NEAR(w.lo.x + w.size.x, 1.9f / 2.5f, 1e-4f);
     const Bounds union_only[] = {all};
     const passes::LightWindow u = passes::windowOf(light, union_only);
-    EXPECT_LT(u.near, 1e-3f);
-    EXPECT_GT(u.size.x, 5.0f);
+    EXPECT_LT(u.near, 0.05f * w.near);
+    EXPECT_GT(u.size.x, passes::kMaxViewTan);
 
     // A sample frustum from a corner of the light sees the casters from no nearer than they are.
     const glm::vec3 corner = light.corners()[0];
@@ -80,4 +80,28 @@ TEST(LightWindows, ABoxWhollyBehindTheLightIsLeftOut) {
     EXPECT_EQ(with.lo, w.lo);
     EXPECT_EQ(with.size, w.size);
     EXPECT_TRUE(passes::windowOf(light, std::span(boxes).last(1)).empty());
+}
+
+TEST(LightWindows, ACasterAcrossTheLightsPlaneSetsNearWhereTheWidestViewMeetsIt) {
+    // A light at (0, 3, 0) looking straight down: its frame is x = world x, z = 3 - world y.
+    // One caster crosses the light's plane 1.9-2.1 m beside it (z from -0.5 to 0.5); a view
+    // holds at most 80 degrees from the axis (|x| <= 5.67 z), so the nearest of it any map
+    // holds lies at z = 1.9 / 5.67. The whole box's nearest corner (behind the plane) set near
+    // to far x 1e-4 before, so every window had the depth precision and blocker search of a
+    // caster touching the light.
+    scene::RectLight light;
+    light.position = {0, 3, 0};
+    light.target = {0, 0, 0};
+    light.up = {0, 0, -1};
+    const std::vector<Bounds> boxes = {box({1.9f, 2.5f, -0.1f}, {2.1f, 3.5f, 0.1f}),
+                                       box({-0.5f, 0.5f, -0.5f}, {0.5f, 0.6f, 0.5f})};
+    const passes::LightWindow w = passes::windowOf(light, boxes);
+    EXPECT_NEAR(w.near, 1.9f / passes::kMaxViewTan, 1e-4f);
+    EXPECT_NEAR(w.far, 2.5f, 1e-3f);
+    EXPECT_NEAR(w.lo.x + w.size.x, passes::kMaxViewTan, 1e-3f);
+    const passes::SampleView v = passes::makeSampleView(light, light.position, boxes, 1.0f, 256);
+    EXPECT_NEAR(v.forward.w, 1.9f / passes::kMaxViewTan - 0.01f * 2.5f, 0.01f);
+    // The cut keeps what a view holds: every vertex lies within the widest view.
+    for (const glm::vec3& p : passes::visibleVertices(boxes, light, light.position))
+        EXPECT_LE(std::max(std::fabs(p.x), std::fabs(p.y)), passes::kMaxViewTan * p.z + 1e-4f);
 }
