@@ -87,9 +87,12 @@ TEST(CssGL, ContactShadowsAreNotLighterThanReference) {
         s, m, u);
     // Measured 0.470 (reference), 0.444 (sat) and 0.509 (mipmap): 0.03 allows for the 53-pixel
     // sample's noise, 0.05 for the mipmaps' coarser blocker search (one trilinear tap per
-    // layer); both catch the leak the paper's sharpening exists for (0.88 without it).
+    // layer); both catch the leak the paper's sharpening exists for (0.88 without it). Since the
+    // map's window is fitted to each caster (finer texels on this scene of three casters),
+    // 0.440 and 0.535, while the whole scene's receivers' error against `exact` fell (320 x 240:
+    // sat 0.065 -> 0.051, mipmap 0.061 -> 0.057), so the mipmaps' allowance is 0.07.
     EXPECT_LE(s, r + 0.03);
-    EXPECT_LE(m, r + 0.05);
+    EXPECT_LE(m, r + 0.07);
     EXPECT_GT(u, s + 0.05) << "contact sharpening should darken the contact";
 }
 
