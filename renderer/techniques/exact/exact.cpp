@@ -33,8 +33,9 @@ constexpr std::array kExactParams = {
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter"),
     intParam(kThreads, 0, 0, 256, "ray-casting threads (0: one per core)"),
     floatParam(kRayOffset, 1e-5, 0.0, 1e-2,
-               "a shadow ray starts this far from its point, as a share of the casters' "
-               "bounding diagonal (skips the point's own surface; no shadow-map bias)"),
+               "a shadow ray skips this much of its start and, toward light above the "
+               "point's facet, starts this far off it; a share of the casters' bounding "
+               "diagonal (skips the point's own surface; no shadow-map bias)"),
     intParam(kEnvSamples, 256, 2, 4096,
              "environment: shadow rays per pixel, half toward directions drawn by the map's "
              "luminance, half by the cosine, combined by multiple importance sampling"),
@@ -64,6 +65,7 @@ public:
             if (ctx.light == 0 || position_.empty()) {
                 position_ = passes::readTexture(ctx.gbuffer.position(), w, h, 4, GL_RGBA);
                 normal_ = passes::readTexture(ctx.gbuffer.normal(), w, h, 4, GL_RGBA);
+                geometric_ = passes::readTexture(ctx.gbuffer.geometricNormal(), w, h, 4, GL_RGBA);
             }
         });
         std::vector<float> out(size_t(w) * size_t(h) * 4);
@@ -103,7 +105,8 @@ public:
 
 private:
     exact::PixelTracer makeTracer() const {
-        return {position_, normal_, rays_, environment_.get(), jitter_, seed_, env_samples_};
+        return {position_,          normal_, geometric_, rays_,
+                environment_.get(), jitter_, seed_,      env_samples_};
     }
 
     // Runs PIXEL(index, tnear) -> rays cast for every pixel on threads_ threads, rows handed
@@ -160,7 +163,7 @@ private:
     std::unique_ptr<exact::EnvironmentSampler> environment_;
     int threads_ = 1;
     exact::RayScene rays_;
-    std::vector<float> position_, normal_;
+    std::vector<float> position_, normal_, geometric_;
     Clock::time_point last_report_{};
 };
 
@@ -178,11 +181,11 @@ const TechniqueInfo kExactTechnique = {
         env.irradiance_layer = true;
         return env;
     },
-    // The G-buffer read back (position and normal, 32 bytes a pixel) and the layer it computes
-    // (16), on the CPU.
+    // The G-buffer read back (position, normal and facet normal, 48 bytes a pixel) and the layer
+    // it computes (16), on the CPU.
     [](const Params&, std::uint64_t pixels) {
-        return MemoryTerms{{"image.width", "exact's readback and ray results (48 bytes a pixel)",
-                            saturatingProduct({pixels, 48})}};
+        return MemoryTerms{{"image.width", "exact's readback and ray results (64 bytes a pixel)",
+                            saturatingProduct({pixels, 64})}};
     }};
 
 }  // namespace penumbra::techniques

@@ -19,11 +19,11 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
         o[0] = 1, o[1] = 0, o[2] = 0, o[3] = 0;
         return 0;
     }
-    const glm::vec3 p = positionAt(pix), nrm = normalAt(pix);
+    const glm::vec3 p = positionAt(pix), nrm = normalAt(pix), ng = facetAt(pix);
     const auto pixel = static_cast<std::uint32_t>(pix);
     int lit = 0;
     double weighted = 0, weights = 0;
-    std::array<glm::vec3, 8> dirs;
+    std::array<glm::vec3, 8> origins, dirs;
     std::array<float, 8> contrib;
     std::array<bool, 8> active, hit;
     const int total = n * n;
@@ -39,12 +39,13 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
                                 light.edge_y * ((float(j) + jy) / float(n));
             const glm::vec3 d = q - p;
             const float d2 = glm::dot(d, d);
-            dirs[size_t(k)] = d;
+            origins[size_t(k)] = origin(p, ng, d, tnear);
+            dirs[size_t(k)] = q - origins[size_t(k)];
             contrib[size_t(k)] = std::max(glm::dot(nrm, d), 0.0f) *
                                  std::max(-glm::dot(light.forward, d), 0.0f) /
                                  std::max(d2 * d2, 1e-30f);
         }
-        rays.occluded8(p, dirs.data(), active.data(), tnear, hit.data());
+        rays.occluded8(origins.data(), dirs.data(), active.data(), tnear, hit.data());
         for (int k = 0; k < 8; ++k) {
             if (!active[size_t(k)]) continue;
             const bool unblocked = !hit[size_t(k)];
@@ -69,6 +70,15 @@ glm::vec3 PixelTracer::normalAt(size_t pix) const {
     const float len = glm::length(n);
     return len > 0 ? n / len : glm::vec3(0, 1, 0);
 }
+glm::vec3 PixelTracer::facetAt(size_t pix) const {
+    const glm::vec3 n(geometric[4 * pix], geometric[4 * pix + 1], geometric[4 * pix + 2]);
+    const float len = glm::length(n);
+    return len > 0 ? n / len : glm::vec3(0);
+}
+glm::vec3 PixelTracer::origin(const glm::vec3& p, const glm::vec3& ng, const glm::vec3& d,
+                              float near) {
+    return glm::dot(ng, d) > 0.0f ? p + ng * near : p;
+}
 
 // The environment at one pixel: OUT gets (shadowed irradiance rgb, unshadowed luminance
 // irradiance), estimated from env_samples rays, half drawn by the map's luminance and
@@ -79,7 +89,7 @@ std::uint64_t PixelTracer::traceEnvironment(size_t pix, float tnear,
     float* o = &out[4 * pix];
     o[0] = o[1] = o[2] = o[3] = 0;
     if (position[4 * pix + 3] == 0.0f || environment->empty()) return 0;
-    const glm::vec3 p = positionAt(pix), nrm = normalAt(pix);
+    const glm::vec3 p = positionAt(pix), nrm = normalAt(pix), ng = facetAt(pix);
     // An orthonormal frame about the normal for the cosine samples.
     const glm::vec3 helper = std::fabs(nrm.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     const glm::vec3 tx = glm::normalize(glm::cross(helper, nrm)), ty = glm::cross(nrm, tx);
@@ -89,7 +99,7 @@ std::uint64_t PixelTracer::traceEnvironment(size_t pix, float tnear,
     const auto pixel = static_cast<std::uint32_t>(pix);
     const std::uint32_t env_seed = seed ^ 0x5bd1e995u;  // another stream than the lights'
     glm::dvec3 shadowed(0.0), open(0.0);
-    std::array<glm::vec3, 8> dirs{}, value{};  // value: L cos / (n_l p_l + n_c p_c)
+    std::array<glm::vec3, 8> origins{}, dirs{}, value{};  // value: L cos / (n_l p_l + n_c p_c)
     std::array<bool, 8> active{}, hit{};
     for (int base = 0; base < env_samples; base += 8) {
         for (int k = 0; k < 8; ++k) {
@@ -116,10 +126,11 @@ std::uint64_t PixelTracer::traceEnvironment(size_t pix, float tnear,
             const float denom = n_l * environment->pdf(d) + n_c * cosine / float(M_PI);
             if (!(denom > 0.0f)) continue;
             value[size_t(k)] = environment->radiance(d) * (cosine / denom);
+            origins[size_t(k)] = origin(p, ng, d, tnear);
             dirs[size_t(k)] = d * reach;
             active[size_t(k)] = true;
         }
-        rays.occluded8(p, dirs.data(), active.data(), tnear, hit.data());
+        rays.occluded8(origins.data(), dirs.data(), active.data(), tnear, hit.data());
         for (int k = 0; k < 8; ++k) {
             if (!active[size_t(k)]) continue;
             open += glm::dvec3(value[size_t(k)]);

@@ -19,8 +19,9 @@ struct AreaLight {
 };
 
 struct PixelTracer {
-    const std::vector<float>& position;  // the G-buffer's RGBA positions (a = 0: background)
-    const std::vector<float>& normal;    // and normals
+    const std::vector<float>& position;   // the G-buffer's RGBA positions (a = 0: background)
+    const std::vector<float>& normal;     // and normals (shading)
+    const std::vector<float>& geometric;  // and facet normals (the triangles' planes)
     const RayScene& rays;
     const EnvironmentSampler* environment;  // null without an environment layer
     bool jitter;
@@ -38,6 +39,13 @@ struct PixelTracer {
     glm::vec3 positionAt(std::size_t pix) const;
     // The G-buffer normal of PIX, unit length (+y where the G-buffer holds none).
     glm::vec3 normalAt(std::size_t pix) const;
+    // The facet normal of PIX, unit length (0 where the G-buffer holds none).
+    glm::vec3 facetAt(std::size_t pix) const;
+    // Where a ray from P in direction D starts: P lifted NEAR along the facet normal NG when D
+    // leaves the facet's front, so that a grazing ray cannot re-enter the surface it starts on
+    // from a position a rounding error behind it; else P.
+    static glm::vec3 origin(const glm::vec3& p, const glm::vec3& ng, const glm::vec3& d,
+                            float near);
 };
 
 }  // namespace penumbra::techniques::exact

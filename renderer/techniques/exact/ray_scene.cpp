@@ -70,7 +70,7 @@ void RayScene::update(const scene::Scene& s) {
     centre_ = triangles_ > 0 ? 0.5f * (lo + hi) : glm::vec3(0.0f);
 }
 
-void RayScene::occluded8(const glm::vec3& origin, const glm::vec3 dirs[8], const bool active[8],
+void RayScene::occluded8(const glm::vec3 origins[8], const glm::vec3 dirs[8], const bool active[8],
                          float near, bool hit[8]) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -79,7 +79,7 @@ void RayScene::occluded8(const glm::vec3& origin, const glm::vec3 dirs[8], const
     alignas(32) int valid[8];
     for (int i = 0; i < 8; ++i) {
         valid[i] = active[i] ? -1 : 0;
-        rays.org_x[i] = origin.x, rays.org_y[i] = origin.y, rays.org_z[i] = origin.z;
+        rays.org_x[i] = origins[i].x, rays.org_y[i] = origins[i].y, rays.org_z[i] = origins[i].z;
         rays.dir_x[i] = dirs[i].x, rays.dir_y[i] = dirs[i].y, rays.dir_z[i] = dirs[i].z;
         // t runs in units of the direction's length: 1 is the light sample itself.
         rays.tnear[i] = near / std::max(glm::length(dirs[i]), 1e-20f);

@@ -21,9 +21,10 @@ public:
     // Takes SCENE's casters (ShadowRole Both or Occluder) in world space; rebuilds the BVH
     // only when the casters' transforms differ from the last call's.
     void update(const scene::Scene& scene);
-    // Eight segments at once, from ORIGIN to ORIGIN + DIRS[i] (ACTIVE lanes only), each
-    // starting NEAR (a world distance) from the origin: sets HIT[i]. Thread-safe after update().
-    void occluded8(const glm::vec3& origin, const glm::vec3 dirs[8], const bool active[8],
+    // Eight segments at once, from ORIGINS[i] to ORIGINS[i] + DIRS[i] (ACTIVE lanes only),
+    // each starting NEAR (a world distance) from its origin: sets HIT[i]. Thread-safe after
+    // update().
+    void occluded8(const glm::vec3 origins[8], const glm::vec3 dirs[8], const bool active[8],
                    float near, bool hit[8]) const;
 
     size_t triangles() const { return triangles_; }
