@@ -43,4 +43,8 @@
 #define IMAGE_SAT_TABLE 1          // sat_rows.comp
 #define IMAGE_SAT_COLUMNS_TABLE 0  // sat_columns.comp
 
+// Image units of the distance pyramid's reduction (distance_pyramid.comp).
+#define IMAGE_PYRAMID_FINER 0
+#define IMAGE_PYRAMID_COARSER 1
+
 #endif

@@ -61,9 +61,12 @@ void Adaptive::prepare(const gl::ContextInfo& gl, const passes::GpuScene&) {
             settings_.map_size, std::min(kTestBatch, std::max(gl.max_array_layers, 1)),
             gl.has_vertex_layer);
         lit_bits_ = std::make_unique<adaptive::LitBits>();
-        if (skip_lit_)
-            region_ = std::make_unique<bitmask::DepthRanges>(regionSize(settings_.map_size),
-                                                             bitmask::Accel::Hsm, 0);
+        if (skip_lit_) {
+            region_ = std::make_unique<passes::DistancePyramid>(regionSize(settings_.map_size),
+                                                                "adaptive lit region");
+            region_pass_ = std::make_unique<passes::LightDepthPass>(
+                "adaptive lit region depth", passes::LightDepthPass::Output::Distance);
+        }
     }
     accumulate_ = std::make_unique<passes::ShadowAccumulate>();
     map_compare_ = std::make_unique<adaptive::MapCompare>();
@@ -167,10 +170,10 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
                                                settings_.map_size)
                             .params.y;
     ctx.pass("adaptive_lit_region", [&] {
-        region_->renderMap(ctx.gpu, light, region.window.viewProj(light));
-        region_->buildHsm();
-        region.pyramid = region_->hsm().id();
-        region.size = region_->mapSize();
+        region_->render(*region_pass_, ctx.gpu, light, region.window.viewProj(light));
+        region_->build();
+        region.pyramid = region_->texture().id();
+        region.size = region_->size();
         region.levels = region_->levels();
         lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, region);
     });

@@ -11,14 +11,15 @@
 #include <optional>
 #include <vector>
 
+#include "renderer/passes/distance_pyramid.h"
 #include "renderer/passes/gbuffer.h"
+#include "renderer/passes/light_depth.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/adaptive/error_budget.h"
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/lit_bits.h"
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
-#include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -277,9 +278,10 @@ private:
     std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
     std::unique_ptr<passes::ShadowAccumulate> accumulate_;
     std::unique_ptr<MapCompare> map_compare_;
-    std::unique_ptr<LitBits> lit_bits_;             // the lit path's
-    std::unique_ptr<bitmask::DepthRanges> region_;  // the lit path's casters from the centre
-    std::unique_ptr<passes::GBuffer> light_view_;   // receivers seen from the light's centre
+    std::unique_ptr<LitBits> lit_bits_;                    // the lit path's
+    std::unique_ptr<passes::DistancePyramid> region_;      // the lit path's casters from the centre
+    std::unique_ptr<passes::LightDepthPass> region_pass_;  // their distances into it
+    std::unique_ptr<passes::GBuffer> light_view_;          // receivers seen from the light's centre
     passes::SampleViewBuffer views_buffer_;
     std::vector<passes::SampleView> views_;
 };

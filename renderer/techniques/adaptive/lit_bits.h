@@ -18,7 +18,7 @@
 namespace penumbra::techniques::adaptive {
 
 // The casters seen from the light's centre: a min/max pyramid of their distances from the
-// light's plane (RG32F mips, bitmask::DepthRanges' HSM) through WINDOW.
+// light's plane (RG32F mips, passes::DistancePyramid) through WINDOW.
 struct LitRegion {
     GLuint pyramid = 0;
     int size = 0, levels = 0;

@@ -17,46 +17,18 @@ int log2Of(int n) {
 GLuint groupsFor(int size) {
     return static_cast<GLuint>((size + 7) / 8);
 }
-
-// A framebuffer drawing into level 0 of PYRAMID, depth-tested against DEPTH.
-gl::Framebuffer pyramidTarget(const gl::Texture& pyramid, const gl::Texture& depth,
-                              const char* label) {
-    gl::Framebuffer fbo = gl::createFramebuffer(label);
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, pyramid.id(), 0);
-    glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-    passes::checkFramebuffer(fbo, label);
-    return fbo;
-}
-
-// Clears FBO's distances to kEmpty and its depth to the far plane, ready to draw.
-void beginDistanceDraw(const gl::Framebuffer& fbo, int size) {
-    passes::beginDepthMapDraw(fbo.id(), size);
-    const float empty[4] = {DepthRanges::kEmpty, DepthRanges::kEmpty, 0.0f, 0.0f}, far = 1.0f;
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, empty);
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
-}
-
-void endDistanceDraw() {
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
 }  // namespace
 
 DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer)
     : map_size_(map_size),
-      levels_(log2Of(map_size) + 1),
+      hsm_(map_size, "bitmask hsm"),
       depth_pass_("bitmask light depth", passes::LightDepthPass::Output::Distance) {
-    hsm_ = gl::createTexture2D(GL_RG32F, map_size_, map_size_, "bitmask hsm", levels_);
-    depth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, map_size_, map_size_, "bitmask map depth");
-    fbo_ = pyramidTarget(hsm_, depth_, "bitmask light depth map");
     if (far_layer) {
-        far_ = gl::createTexture2D(GL_RG32F, map_size_, map_size_, "bitmask far layer", levels_);
-        far_fbo_ = pyramidTarget(far_, depth_, "bitmask far layer map");
+        far_ = std::make_unique<passes::DistancePyramid>(map_size_, "bitmask far layer",
+                                                         &hsm_.depth());
         peel_pass_ = std::make_unique<passes::LightDepthPass>("bitmask far layer peel",
                                                               "techniques/bitmask/peel.frag");
     }
-    hsm_program_ = gl::buildProgram("bitmask hsm", {"techniques/bitmask/hsm.comp"});
     if (accel == Accel::Hsm) return;
     ysm_ = accel == Accel::Ysm;
     mssm_base_ = accel == Accel::Ysm ? std::max(0, log2Of(map_size_ / ysm_size)) : 0;
@@ -71,38 +43,23 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer
 
 void DepthRanges::renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                             const glm::mat4& view_proj) {
-    beginDistanceDraw(fbo_, map_size_);
-    depth_pass_.draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj});
-    endDistanceDraw();
+    hsm_.render(depth_pass_, scene, light, view_proj);
 }
 
 void DepthRanges::renderFarLayer(const passes::GpuScene& scene, const scene::RectLight& light,
                                  const glm::mat4& view_proj) {
-    beginDistanceDraw(far_fbo_, map_size_);
+    far_->beginDraw();
     glUseProgram(peel_pass_->program().id());
     gl::setUniform(peel_pass_->program(), "u_peel_gap", kPeelGap);
-    glBindTextureUnit(BITMASK_UNIT_PEEL_FRONT, hsm_.id());
+    glBindTextureUnit(BITMASK_UNIT_PEEL_FRONT, hsm_.texture().id());
     // Near 0 and range 1: the pass's depth is the distance itself, as peel.frag compares it.
     peel_pass_->draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj, 0.0f, 1.0f});
-    endDistanceDraw();
+    passes::DistancePyramid::endDraw();
 }
 
 void DepthRanges::buildHsm() {
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    glUseProgram(hsm_program_.id());
-    for (const gl::Texture* pyramid : {&hsm_, &far_}) {
-        if (!*pyramid) continue;
-        for (int level = 1; level < levels_; ++level) {
-            glBindImageTexture(BITMASK_IMAGE_HSM_FINER, pyramid->id(), level - 1, GL_FALSE, 0,
-                               GL_READ_ONLY, GL_RG32F);
-            glBindImageTexture(BITMASK_IMAGE_HSM_COARSER, pyramid->id(), level, GL_FALSE, 0,
-                               GL_WRITE_ONLY, GL_RG32F);
-            const GLuint groups = groupsFor(map_size_ >> level);
-            glDispatchCompute(groups, groups, 1);
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-        }
-    }
-    glUseProgram(0);
+    hsm_.build();
+    if (far_) far_->build();
 }
 
 void DepthRanges::buildMssm() {
@@ -117,8 +74,8 @@ void DepthRanges::buildMssm() {
         const bool pair = layer > 0 && layer + 1 < mssm_layers_;
         const bool from_hsm = ysm_ ? layer == 1 : layer == 0;
         if (from_hsm)
-            glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, hsm_.id(), mssm_base_, GL_FALSE, 0,
-                               GL_READ_ONLY, GL_RG32F);
+            glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, hsm_.texture().id(), mssm_base_, GL_FALSE,
+                               0, GL_READ_ONLY, GL_RG32F);
         else
             glBindImageTexture(BITMASK_IMAGE_MSSM_BELOW, mssm_.id(), 0, GL_FALSE, layer - 1,
                                GL_READ_ONLY, GL_RG32F);

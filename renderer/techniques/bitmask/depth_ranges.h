@@ -1,5 +1,6 @@
 // `bitmask`'s light depth map and its acceleration structures (Schwarz & Stamminger, 3 and 6):
-// the HSM, a min/max mip pyramid of distances from the light's plane; the MSSM, per texel the
+// the HSM, a min/max mip pyramid of distances from the light's plane (passes::DistancePyramid,
+// which `adaptive` shares); the MSSM, per texel the
 // depth range of every power-of-two neighbourhood; the YSM, an MSSM built from a coarser HSM
 // level. All are built on the GPU by compute shaders. With a far layer, also the nearest
 // caster surface behind the map's (depth peeling) and its own min/max pyramid.
@@ -10,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/gl/handles.h"
+#include "renderer/passes/distance_pyramid.h"
 #include "renderer/passes/gpu_scene.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/scene/scene.h"
@@ -40,28 +42,28 @@ public:
     void buildMssm();
 
     int mapSize() const { return map_size_; }
-    int levels() const { return levels_; }
+    int levels() const { return hsm_.levels(); }
     int mssmBase() const { return mssm_base_; }  // the HSM level that is MSSM layer 0
     int mssmLayers() const { return mssm_layers_; }
-    const gl::Texture& hsm() const { return hsm_; }    // RG32F mips: (min, max) distance
+    const gl::Texture& hsm() const { return hsm_.texture(); }  // RG32F mips: (min, max) distance
     const gl::Texture& mssm() const { return mssm_; }  // RG32F array, layer k: 2^k neighbourhoods
-    const gl::Texture& farLayer() const { return far_; }  // RG32F mips as hsm(); far layer only
+    // RG32F mips as hsm(); far layer only
+    const gl::Texture& farLayer() const { return far_ ? far_->texture() : no_far_; }
 
-    static constexpr float kEmpty = 1e30f;  // the distance stored where no caster is
+    static constexpr float kEmpty = passes::DistancePyramid::kEmpty;  // where no caster is
     // A surface belongs to the far layer when it lies more than this fraction of the front's
     // distance behind it: the back of a closed caster, not the front's own triangles again.
     static constexpr float kPeelGap = 0.01f;
 
 private:
-    int map_size_, levels_, mssm_base_ = 0, mssm_layers_ = 0;
+    int map_size_, mssm_base_ = 0, mssm_layers_ = 0;
     bool ysm_ = false;
-    gl::Texture hsm_, depth_, mssm_;
-    gl::Framebuffer fbo_;
+    passes::DistancePyramid hsm_;
+    gl::Texture mssm_, no_far_;
     passes::LightDepthPass depth_pass_;                  // distances into HSM level 0
-    gl::Texture far_;                                    // the far layer's pyramid
-    gl::Framebuffer far_fbo_;                            // its level 0 and depth_
+    std::unique_ptr<passes::DistancePyramid> far_;       // the far layer's, hsm_'s depth
     std::unique_ptr<passes::LightDepthPass> peel_pass_;  // the far layer's (peel.frag)
-    gl::Program hsm_program_, mssm_program_;
+    gl::Program mssm_program_;
 };
 
 }  // namespace penumbra::techniques::bitmask

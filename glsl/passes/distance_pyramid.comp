@@ -1,10 +1,10 @@
 #version 450 core
-// `bitmask` HSM (hierarchical shadow map): level k holds the (min, max) distance of the 2 x 2
-// texels of level k - 1 below each texel.
-#include "techniques/bitmask/bindings.glsl"
+// The casters' distance pyramid (the HSM, passes/distance_pyramid.h): level k holds the
+// (min, max) distance of the 2 x 2 texels of level k - 1 below each texel.
+#include "common/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rg32f, binding = BITMASK_IMAGE_HSM_FINER) uniform readonly image2D u_finer;
-layout(rg32f, binding = BITMASK_IMAGE_HSM_COARSER) uniform writeonly image2D u_coarser;
+layout(rg32f, binding = IMAGE_PYRAMID_FINER) uniform readonly image2D u_finer;
+layout(rg32f, binding = IMAGE_PYRAMID_COARSER) uniform writeonly image2D u_coarser;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
