@@ -134,15 +134,17 @@ void main() {
         vec3 n = geometricNormal(pix);
         vec3 to_light = u_light_centre - pos.xyz;
         bool away = dot(n, to_light) <= 0.0;
-        // Its own object's layers within the depth its surface spans over two texels: a face
-        // nearly edge-on to the light's centre spans many texels' depth in one (a wall of
-        // random scene rand111, 0.75 m high in about a texel: no layer matched and the
-        // nearest, another object's, striped it). tan of the angle to the light, capped at
-        // 1000 (a face exactly edge-on).
+        // Where none of its own matches, its own within the depth its surface spans over two
+        // texels: a face nearly edge-on to the light's centre spans many texels' depth in one
+        // (a wall of random scene rand111, 0.75 m high in about a texel: no layer matched and
+        // the nearest, another object's, striped it). Only then: at once, a texel of another
+        // part of the object (a duck's head over its steep body) joined the bilinear sum.
+        // tan of the angle to the light, capped at 1000 (a face exactly edge-on).
         float c = abs(dot(n, normalize(to_light)));
         float slope = min(sqrt(max(1.0 - c * c, 0.0)) / max(c, 1e-3), 1000.0);
         float own_tol = tol + 2.0 * texel * slope / u_range;
-        if (!layeredOcclusion(uv, dp, own_tol, id, occlusion, layer) &&
+        if (!layeredOcclusion(uv, dp, tol, id, occlusion, layer) &&
+            !(own_tol > tol && layeredOcclusion(uv, dp, own_tol, id, occlusion, layer)) &&
             (away || !layeredOcclusion(uv, dp, tol, -1, occlusion, layer))) {
             int nearest = -1;
             float nearest_diff = 2.0;
