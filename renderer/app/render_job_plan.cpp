@@ -56,7 +56,9 @@ fs::path nearestExisting(fs::path dir) {
 std::string folderProblem(const fs::path& dir) {
     const fs::path base = nearestExisting(dir);
     std::error_code ec;
-    if (!fs::is_directory(base, ec)) return "'" + base.string() + "' is not a folder";
+    // Appended, not "'" + base.string(): GCC 12 warns falsely (-Wrestrict) on that at -O3.
+    if (!fs::is_directory(base, ec))
+        return std::string("'").append(base.string()) + "' is not a folder";
     const fs::path probe = base / (".penumbra-probe." + std::to_string(::getpid()) + ".tmp");
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
     if (fd < 0)
