@@ -23,7 +23,7 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
     const auto pixel = static_cast<std::uint32_t>(pix);
     int lit = 0;
     double weighted = 0, weights = 0;
-    std::array<glm::vec3, 8> origins, dirs;
+    std::array<glm::vec3, 8> origins{}, dirs{};  // inactive lanes stay zero
     std::array<float, 8> contrib;
     std::array<bool, 8> active, hit;
     const int total = n * n;
