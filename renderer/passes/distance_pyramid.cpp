@@ -3,17 +3,12 @@
 #include "renderer/passes/distance_pyramid.h"
 #include "glsl/common/bindings.glsl"
 
+#include <bit>
+
 namespace penumbra::passes {
-namespace {
-int log2Of(int n) {
-    int l = 0;
-    while ((1 << (l + 1)) <= n) ++l;
-    return l;
-}
-}  // namespace
 
 DistancePyramid::DistancePyramid(int size, const char* label, const gl::Texture* shared_depth)
-    : size_(size), levels_(log2Of(size) + 1) {
+    : size_(size), levels_(std::bit_width(static_cast<unsigned>(size))) {
     texture_ = gl::createTexture2D(GL_RG32F, size_, size_, label, levels_);
     if (!shared_depth) {
         depth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size_, size_, label);

@@ -65,15 +65,20 @@ glm::vec3 PixelTracer::positionAt(size_t pix) const {
     return {position[4 * pix], position[4 * pix + 1], position[4 * pix + 2]};
 }
 // The G-buffer normal of PIX, unit length (+y where the G-buffer holds none).
-glm::vec3 PixelTracer::normalAt(size_t pix) const {
-    const glm::vec3 n(normal[4 * pix], normal[4 * pix + 1], normal[4 * pix + 2]);
+namespace {
+// The RGBA buffer's xyz at PIX, unit length (NONE where it is zero).
+glm::vec3 unitAt(const std::vector<float>& rgba, size_t pix, const glm::vec3& none) {
+    const glm::vec3 n(rgba[4 * pix], rgba[4 * pix + 1], rgba[4 * pix + 2]);
     const float len = glm::length(n);
-    return len > 0 ? n / len : glm::vec3(0, 1, 0);
+    return len > 0 ? n / len : none;
+}
+}  // namespace
+
+glm::vec3 PixelTracer::normalAt(size_t pix) const {
+    return unitAt(normal, pix, glm::vec3(0, 1, 0));
 }
 glm::vec3 PixelTracer::facetAt(size_t pix) const {
-    const glm::vec3 n(geometric[4 * pix], geometric[4 * pix + 1], geometric[4 * pix + 2]);
-    const float len = glm::length(n);
-    return len > 0 ? n / len : glm::vec3(0);
+    return unitAt(geometric, pix, glm::vec3(0));
 }
 glm::vec3 PixelTracer::origin(const glm::vec3& p, const glm::vec3& ng, const glm::vec3& d,
                               float near) {
