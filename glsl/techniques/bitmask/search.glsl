@@ -124,18 +124,9 @@ int hsmQueryLevel(ivec4 r) { return pyramidLevel(r, u_levels); }
 vec2 hsmRange(ivec4 r, int k) { return pyramidRange(u_hsm, r, k); }
 
 #if ACCEL != 0
-// The range over the inclusive texel range R of MSSM layer 0: four (overlapping) power-of-two
-// neighbourhoods that cover it exactly. The top layer built is log2(size) - 1: an extent of the
-// whole map, 2^log2(size), is two neighbourhoods of that layer (depth_ranges.cpp).
-vec2 mssmRange(ivec4 r) {
-    int extent = max(r.z - r.x, r.w - r.y) + 1;
-    int k = min(findMSB(extent), textureSize(u_mssm, 0).z - 1);
-    ivec2 hi = max(r.zw - ((1 << k) - 1), r.xy);
-    return combine4(texelFetch(u_mssm, ivec3(r.xy, k), 0).rg,
-                    texelFetch(u_mssm, ivec3(hi.x, r.y, k), 0).rg,
-                    texelFetch(u_mssm, ivec3(r.x, hi.y, k), 0).rg,
-                    texelFetch(u_mssm, ivec3(hi, k), 0).rg);
-}
+#include "techniques/bitmask/mssm_range.glsl"
+
+vec2 mssmRange(ivec4 r) { return mssmRange(u_mssm, r); }
 #endif
 
 // The (min, max) distance over area A (level-0 texels), grown outward to whole texels of level

@@ -33,9 +33,10 @@ DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer
     ysm_ = accel == Accel::Ysm;
     mssm_base_ = accel == Accel::Ysm ? std::max(0, log2Of(map_size_ / ysm_size)) : 0;
     const int size = map_size_ >> mssm_base_;
-    // Layers 0 .. log2(size) - 1: an extent of the whole part is two neighbourhoods of the
-    // layer below the whole-map one (search.glsl, mssmRange), which is never built.
-    mssm_layers_ = std::max(1, log2Of(size));
+    // Layers 0 .. log2(size) - 2: an extent wider than two neighbourhoods of the top layer
+    // (up to the whole part, 4 of them) takes up to 4 x 4 of them (search.glsl, mssmRange), so
+    // the two layers above it, which few queries reach, are never built.
+    mssm_layers_ = std::max(1, log2Of(size) - 1);
     mssm_ = gl::createTexture2DArray(GL_RG32F, size, size, mssm_layers_,
                                      accel == Accel::Ysm ? "bitmask ysm" : "bitmask mssm");
     mssm_program_ = gl::buildProgram("bitmask mssm", {"techniques/bitmask/mssm.comp"});
