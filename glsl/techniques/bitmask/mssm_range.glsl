@@ -8,9 +8,9 @@
 // The (min, max) over the inclusive texel range R of layer 0 of MSSM (layer k: per texel the
 // range over its 2^k x 2^k neighbourhood): four overlapping neighbourhoods of the layer of R's
 // longer extent cover it, exactly along that axis; along the shorter one they reach 2^k texels
-// from its start (clamped at the map's edge). The top layer built is log2(size) - 2 (depth_ranges.cpp): an extent
-// wider than two of its neighbourhoods (up to the whole map, four) takes up to 4 x 4 of them,
-// starting 2^k apart, the last ending at R's edge.
+// from its start (clamped at the map's edge). The top layer built is log2(size) - 2
+// (depth_ranges.cpp): an extent wider than two of its neighbourhoods (up to the whole map,
+// four) takes up to 4 x 4 of them, starting 2^k apart, the last ending at R's edge.
 vec2 mssmRange(sampler2DArray mssm, ivec4 r) {
     int extent = max(r.z - r.x, r.w - r.y) + 1;
     int top = textureSize(mssm, 0).z - 1;
