@@ -93,9 +93,10 @@ inline constexpr std::array kAdaptiveParams = {
                "metric \"tile\": refine when disagreeing pixels / tile pixels >= this"),
     enumParam(kMetricArea, MetricArea::Map,
               "eq. 4's denominator: shadow-map texels SM_x*SM_y (paper) or camera pixels"),
-    intParam(kCompareStride, 2, 1, 8,
+    intParam(kCompareStride, 1, 1, 8,
              "compare at every k-th pixel along x and y of the comparison view, counting each "
-             "disagreement as k^2 pixels (1: every pixel, as the paper)"),
+             "disagreement as k^2 pixels (1: every pixel, as the paper; more can miss a shadow "
+             "narrower than k pixels)"),
     intParam(kMaxDepth, 4, 0, 8, "deepest quadtree level"),
     intParam(kMaxMaps, 289, 4, 1024,
              "most shadow maps per light (refinement stops there; 289: the full depth-4 grid); "

@@ -125,9 +125,14 @@ ShadowBits LitBits::read(int views, int stride) const {
     out.pixels = size_t(w) * size_t(h);
     out.words = std::clamp((views + 31) / 32, 1, planes_);
     out.scale = double(stride) * double(stride);
+    out.bits.assign(out.pixels * size_t(out.words), 0u);
+    if (stride == 1 && out.words == 1) {  // the layout is the same: no gather
+        glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(plane * sizeof(GLuint)), out.bits.data());
+        out.index();
+        return out;
+    }
     std::vector<GLuint> all(plane * size_t(out.words));
     glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(all.size() * sizeof(GLuint)), all.data());
-    out.bits.assign(out.pixels * size_t(out.words), 0u);
     for (int y = 0; y < h; ++y) {
         const size_t sy = size_t(std::min(y * stride + stride / 2, height_ - 1));
         for (int x = 0; x < w; ++x) {
@@ -138,6 +143,7 @@ ShadowBits LitBits::read(int views, int stride) const {
                     all[size_t(k) * plane + sy * size_t(width_) + sx];
         }
     }
+    out.index();
     return out;
 }
 

@@ -131,6 +131,7 @@ ShadowBits MapCompare::shadowBits(const passes::GBuffer& gbuffer,
     }
     glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);
     glUseProgram(0);
+    out.index();
     return out;
 }
 

@@ -53,12 +53,15 @@ TEST(PixelErrorBudget, NothingShadowedNothingToSplit) {
 }
 
 TEST(ShadowBits, CountsAndDisagreements) {
-    // Three pixels, two words each (slot 33 in the second word), every pixel standing for 4.
+    // Four pixels, two words each (slot 33 in the second word), every pixel standing for 4;
+    // pixel 3 is shadowed by no slot, so index() leaves it out.
     ShadowBits bits;
-    bits.pixels = 3;
+    bits.pixels = 4;
     bits.words = 2;
     bits.scale = 4;
-    bits.bits = {0b01u, 0u, 0b10u, 1u << 1, 0b11u, 0u};
+    bits.bits = {0b01u, 0u, 0b10u, 1u << 1, 0b11u, 0u, 0u, 0u};
+    bits.index();
+    EXPECT_EQ(bits.active, (std::vector<std::uint32_t>{0, 1, 2}));
     EXPECT_TRUE(bits.shadowed(0, 0));
     EXPECT_TRUE(bits.shadowed(1, 33));
     EXPECT_FALSE(bits.shadowed(2, 33));
