@@ -16,11 +16,12 @@ vec2 mssmRange(sampler2DArray mssm, ivec4 r) {
     int top = textureSize(mssm, 0).z - 1;
     int k = min(findMSB(extent), top);
     ivec2 hi = max(r.zw - ((1 << k) - 1), r.xy);
-    vec2 range = combine4(texelFetch(mssm, ivec3(r.xy, k), 0).rg,
-                          texelFetch(mssm, ivec3(hi.x, r.y, k), 0).rg,
-                          texelFetch(mssm, ivec3(r.x, hi.y, k), 0).rg,
-                          texelFetch(mssm, ivec3(hi, k), 0).rg);
-    if (findMSB(extent) <= top) return range;
+    if (findMSB(extent) <= top)
+        return combine4(texelFetch(mssm, ivec3(r.xy, k), 0).rg,
+                        texelFetch(mssm, ivec3(hi.x, r.y, k), 0).rg,
+                        texelFetch(mssm, ivec3(r.x, hi.y, k), 0).rg,
+                        texelFetch(mssm, ivec3(hi, k), 0).rg);
+    vec2 range = texelFetch(mssm, ivec3(r.xy, k), 0).rg;
     for (int j = 0; j < 4; ++j) {
         int y = min(r.y + (j << k), hi.y);
         for (int i = 0; i < 4; ++i) {
