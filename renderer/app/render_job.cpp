@@ -57,6 +57,7 @@ JobInput loadInput(const RenderRequest& req) {
     Params params = resolveFor(info, first);
     for (int f : frames) resolveFor(info, source.at(f));  // animated parameters stay valid
     std::vector<FramePlan> plans = planFrames(req, first.name, frames);
+    checkOutputsAreNotInputs(req, plans, source.inputFiles());
     return {std::move(source), std::move(first), info, std::move(params), std::move(plans)};
 }
 

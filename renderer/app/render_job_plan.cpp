@@ -11,6 +11,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
@@ -136,6 +137,23 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& s
         plans.push_back(p);
     }
     return plans;
+}
+
+void checkOutputsAreNotInputs(const RenderRequest& req, const std::vector<FramePlan>& plans,
+                              const std::vector<std::string>& inputs) {
+    const std::set<std::string> read(inputs.begin(), inputs.end());
+    const std::string timing_flag = req.timings ? "--timings" : "--output";
+    const std::string timing_what = req.timings ? "" : " (its timing JSON)";
+    for (const FramePlan& p : plans)
+        for (const auto& [path, flag, what] :
+             {std::tuple{p.exr, std::string("--output"), std::string()},
+              std::tuple{p.timing, timing_flag, timing_what},
+              std::tuple{p.preview, std::string("--preview"), std::string()}}) {
+            if (path.empty() || !read.count(outputIdentity(path))) continue;
+            throw InputError(flag + ": '" + quoteText(path) + "'" + what +
+                             " is a file the scene reads; writing it would overwrite that input "
+                             "(name another output)");
+        }
 }
 
 void checkOutputFolders(const std::vector<FramePlan>& plans) {

@@ -25,6 +25,12 @@ std::vector<int> chooseFrames(const RenderRequest& req, const scene::SceneSource
 std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& scene_name,
                                   const std::vector<int>& frames);
 
+// Throws InputError naming the flag when a file of PLANS is one of INPUTS (the scene's
+// inputFiles()): the render would overwrite what it reads, e.g. -o scene.exr beside scene.json,
+// whose timing JSON is scene.json.
+void checkOutputsAreNotInputs(const RenderRequest& req, const std::vector<FramePlan>& plans,
+                              const std::vector<std::string>& inputs);
+
 // Every folder the plans write into must exist or be creatable, and accept a new file (tried
 // with a probe file, so it holds for root and read-only mounts). Throws InputError.
 void checkOutputFolders(const std::vector<FramePlan>& plans);

@@ -32,6 +32,14 @@ std::shared_ptr<const EnvironmentImage> AssetStore::environment(const std::files
     return slot;
 }
 
+std::vector<std::string> AssetStore::files() {
+    const std::lock_guard lock(mutex_);
+    std::vector<std::string> out;
+    for (const auto& [key, file] : gltf_) out.push_back(key);
+    for (const auto& [key, image] : environments_) out.push_back(key);
+    return out;
+}
+
 std::shared_ptr<const Model> AssetStore::derived(
     const std::string& key, const std::function<std::shared_ptr<const Model>()>& make) {
     const std::lock_guard lock(mutex_);

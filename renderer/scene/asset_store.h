@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "renderer/scene/gltf_loader.h"
 #include "renderer/scene/scene.h"
@@ -29,6 +30,8 @@ public:
 
     // The cache key of PATH: canonical when it exists, else lexically normal.
     static std::string pathKey(const std::filesystem::path& path);
+    // The keys of every glTF and environment file loaded so far (what a render reads).
+    std::vector<std::string> files();
 
 private:
     static constexpr std::size_t kMaxDerived = 256;

@@ -72,6 +72,12 @@ struct SceneSource::AssetCache {
     std::shared_ptr<const Scene> still;  // the scene when nothing is animated
 };
 
+std::vector<std::string> SceneSource::inputFiles() const {
+    std::vector<std::string> files{AssetStore::pathKey(path_)};
+    for (std::string& f : assets_->store.files()) files.push_back(std::move(f));
+    return files;
+}
+
 SceneSource SceneSource::load(const std::filesystem::path& file,
                               const std::vector<Override>& overrides, const LoadOptions& options) {
     const std::string label = file.string();

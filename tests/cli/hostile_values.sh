@@ -1,5 +1,6 @@
 # Wrong codes and messages: bad values in a fit-lights file, outputs that are one file under two
-# names, a corrupt PNG budget map (no libpng line), and long values quoted at most 80 characters.
+# names or an input of the scene, a corrupt PNG budget map (no libpng line), and long values
+# quoted at most 80 characters.
 source "$(dirname "$0")/lib.sh"
 cd "$WORK"
 S="$DATA/small.json"
@@ -33,6 +34,21 @@ mkdir -p sub
 expect_exit 2 "^penumbra: --timings: 'sub/../y.exr' is another output of frame 1$" -- \
     "$PENUMBRA" render "$S" -f 1 -o y.exr --timings sub/../y.exr
 [ ! -e y.exr ] || fail "a refused render left output"
+
+# output_overwrites_scene: `-o own.exr` beside own.json replaced the scene with its timing JSON;
+# an explicit --timings onto the scene, or onto a glTF it reads, did the same.
+cp "$S" own.json
+expect_exit 2 "^penumbra: --output: 'own.json' \(its timing JSON\) is a file the scene reads; \
+writing it would overwrite that input \(name another output\)$" -- "$PENUMBRA" render own.json \
+    -f 1 -o own.exr
+expect_exit 2 "^penumbra: --timings: 'sub/../own.json' is a file the scene reads; " -- \
+    "$PENUMBRA" render own.json -f 1 -o z.exr --timings sub/../own.json
+cmp -s own.json "$S" || fail "a refused render changed the scene file"
+[ ! -e own.exr ] && [ ! -e z.exr ] || fail "a refused render left output"
+cp "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" duck.glb
+expect_exit 2 "^penumbra: --timings: 'duck.glb' is a file the scene reads; " -- \
+    "$PENUMBRA" render duck.glb --size 32x24 -o duck.exr --timings duck.glb
+cmp -s duck.glb "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" || fail "the glTF was changed"
 
 # png_budget_map_corrupt: a PNG whose data is damaged printed a libpng line first.
 cp "$S" scene.json

@@ -66,6 +66,15 @@ public:
                 position_ = passes::readTexture(ctx.gbuffer.position(), w, h, 4, GL_RGBA);
                 normal_ = passes::readTexture(ctx.gbuffer.normal(), w, h, 4, GL_RGBA);
                 geometric_ = passes::readTexture(ctx.gbuffer.geometricNormal(), w, h, 4, GL_RGBA);
+                const std::vector<float> ids =
+                    passes::readTexture(ctx.gbuffer.id(), w, h, 1, GL_RED_INTEGER);
+                casts_.assign(ids.size(), 0);
+                const auto& objects = ctx.scene.objects;
+                for (size_t i = 0; i < ids.size(); ++i) {
+                    const auto id = static_cast<long>(ids[i]);
+                    casts_[i] = id >= 0 && size_t(id) < objects.size() &&
+                                scene::castsShadow(objects[size_t(id)].shadow);
+                }
             }
         });
         std::vector<float> out(size_t(w) * size_t(h) * 4);
@@ -105,7 +114,7 @@ public:
 
 private:
     exact::PixelTracer makeTracer() const {
-        return {position_,          normal_, geometric_, rays_,
+        return {position_,          normal_, geometric_, casts_,      rays_,
                 environment_.get(), jitter_, seed_,      env_samples_};
     }
 
@@ -164,6 +173,7 @@ private:
     int threads_ = 1;
     exact::RayScene rays_;
     std::vector<float> position_, normal_, geometric_;
+    std::vector<std::uint8_t> casts_;  // per pixel: its object casts (ShadowRole both, occluder)
     Clock::time_point last_report_{};
 };
 
@@ -181,11 +191,11 @@ const TechniqueInfo kExactTechnique = {
         env.irradiance_layer = true;
         return env;
     },
-    // The G-buffer read back (position, normal and facet normal, 48 bytes a pixel) and the layer
-    // it computes (16), on the CPU.
+    // The G-buffer read back (position, normal and facet normal, 48 bytes a pixel; ids, 4 and
+    // 1), and the layer it computes (16), on the CPU.
     [](const Params&, std::uint64_t pixels) {
-        return MemoryTerms{{"image.width", "exact's readback and ray results (64 bytes a pixel)",
-                            saturatingProduct({pixels, 64})}};
+        return MemoryTerms{{"image.width", "exact's readback and ray results (69 bytes a pixel)",
+                            saturatingProduct({pixels, 69})}};
     }};
 
 }  // namespace penumbra::techniques

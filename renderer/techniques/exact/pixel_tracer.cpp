@@ -11,7 +11,8 @@
 namespace penumbra::techniques::exact {
 
 // One pixel's rays: OUT gets (unblocked share, sum c lit, sum c, 1), c = cos cos / r^2 of
-// the sample (0 below the receiver's horizon and behind the light). Returns rays cast.
+// the sample (0 below the receiver's horizon and behind the light); a sample beyond the facet
+// of a surface that casts is blocked by that surface without a ray. Returns rays cast.
 std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix, float tnear,
                                       std::vector<float>& out) const {
     float* o = &out[4 * pix];
@@ -27,6 +28,7 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
     std::array<float, 8> contrib;
     std::array<bool, 8> active, hit;
     const int total = n * n;
+    std::uint64_t cast = 0;
     for (int base = 0; base < total; base += 8) {
         for (int k = 0; k < 8; ++k) {
             const int s = base + k;
@@ -39,6 +41,8 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
                                 light.edge_y * ((float(j) + jy) / float(n));
             const glm::vec3 d = q - p;
             const float d2 = glm::dot(d, d);
+            active[size_t(k)] = !throughOwnSurface(pix, ng, d);  // else blocked, no ray
+            cast += active[size_t(k)];
             origins[size_t(k)] = origin(p, ng, d, tnear);
             dirs[size_t(k)] = q - origins[size_t(k)];
             contrib[size_t(k)] = std::max(glm::dot(nrm, d), 0.0f) *
@@ -46,9 +50,8 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
                                  std::max(d2 * d2, 1e-30f);
         }
         rays.occluded8(origins.data(), dirs.data(), active.data(), tnear, hit.data());
-        for (int k = 0; k < 8; ++k) {
-            if (!active[size_t(k)]) continue;
-            const bool unblocked = !hit[size_t(k)];
+        for (int k = 0; k < 8 && base + k < total; ++k) {
+            const bool unblocked = active[size_t(k)] && !hit[size_t(k)];
             lit += unblocked;
             weights += contrib[size_t(k)];
             if (unblocked) weighted += contrib[size_t(k)];
@@ -58,7 +61,7 @@ std::uint64_t PixelTracer::tracePixel(const AreaLight& light, int n, size_t pix,
     o[1] = float(weighted / total);
     o[2] = float(weights / total);
     o[3] = 1;  // the light was sampled (glsl/passes/shading.glsl)
-    return std::uint64_t(total);
+    return cast;
 }
 
 glm::vec3 PixelTracer::positionAt(size_t pix) const {
@@ -79,6 +82,9 @@ glm::vec3 PixelTracer::normalAt(size_t pix) const {
 }
 glm::vec3 PixelTracer::facetAt(size_t pix) const {
     return unitAt(geometric, pix, glm::vec3(0));
+}
+bool PixelTracer::throughOwnSurface(size_t pix, const glm::vec3& ng, const glm::vec3& d) const {
+    return casts[pix] != 0 && ng != glm::vec3(0.0f) && glm::dot(ng, d) <= 0.0f;
 }
 glm::vec3 PixelTracer::origin(const glm::vec3& p, const glm::vec3& ng, const glm::vec3& d,
                               float near) {
@@ -106,6 +112,7 @@ std::uint64_t PixelTracer::traceEnvironment(size_t pix, float tnear,
     glm::dvec3 shadowed(0.0), open(0.0);
     std::array<glm::vec3, 8> origins{}, dirs{}, value{};  // value: L cos / (n_l p_l + n_c p_c)
     std::array<bool, 8> active{}, hit{};
+    std::uint64_t cast = 0;
     for (int base = 0; base < env_samples; base += 8) {
         for (int k = 0; k < 8; ++k) {
             const int s = base + k;
@@ -131,20 +138,21 @@ std::uint64_t PixelTracer::traceEnvironment(size_t pix, float tnear,
             const float denom = n_l * environment->pdf(d) + n_c * cosine / float(M_PI);
             if (!(denom > 0.0f)) continue;
             value[size_t(k)] = environment->radiance(d) * (cosine / denom);
+            open += glm::dvec3(value[size_t(k)]);
+            if (throughOwnSurface(pix, ng, d)) continue;  // blocked: no ray
             origins[size_t(k)] = origin(p, ng, d, tnear);
             dirs[size_t(k)] = d * reach;
             active[size_t(k)] = true;
+            ++cast;
         }
         rays.occluded8(origins.data(), dirs.data(), active.data(), tnear, hit.data());
         for (int k = 0; k < 8; ++k) {
-            if (!active[size_t(k)]) continue;
-            open += glm::dvec3(value[size_t(k)]);
-            if (!hit[size_t(k)]) shadowed += glm::dvec3(value[size_t(k)]);
+            if (active[size_t(k)] && !hit[size_t(k)]) shadowed += glm::dvec3(value[size_t(k)]);
         }
     }
     o[0] = float(shadowed.r), o[1] = float(shadowed.g), o[2] = float(shadowed.b);
     o[3] = float(0.2126 * open.r + 0.7152 * open.g + 0.0722 * open.b);
-    return std::uint64_t(env_samples);
+    return cast;
 }
 
 }  // namespace penumbra::techniques::exact

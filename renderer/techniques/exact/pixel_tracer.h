@@ -22,6 +22,10 @@ struct PixelTracer {
     const std::vector<float>& position;   // the G-buffer's RGBA positions (a = 0: background)
     const std::vector<float>& normal;     // and normals (shading)
     const std::vector<float>& geometric;  // and facet normals (the triangles' planes)
+    // Per pixel, whether its object casts: a ray from such a surface toward the side its facet
+    // faces away from (the far side of the tangent plane of the side seen) crosses the surface
+    // itself at its start, open sheet or closed, and counts as blocked without being cast.
+    const std::vector<std::uint8_t>& casts;
     const RayScene& rays;
     const EnvironmentSampler* environment;  // null without an environment layer
     bool jitter;
@@ -41,6 +45,9 @@ struct PixelTracer {
     glm::vec3 normalAt(std::size_t pix) const;
     // The facet normal of PIX, unit length (0 where the G-buffer holds none).
     glm::vec3 facetAt(std::size_t pix) const;
+    // Whether a ray from pixel PIX (facet normal NG) in direction D leaves through its own
+    // surface: the object casts and D lies on or below the facet's plane.
+    bool throughOwnSurface(std::size_t pix, const glm::vec3& ng, const glm::vec3& d) const;
     // Where a ray from P in direction D starts: P lifted NEAR along the facet normal NG when D
     // leaves the facet's front, so that a grazing ray cannot re-enter the surface it starts on
     // from a position a rounding error behind it; else P.
