@@ -107,9 +107,9 @@ scene = json.load(open(os.path.join(sys.argv[1], "two_lights.json")))
 scene["environment"] = {"image": os.path.join(sys.argv[1], "sky_sun.exr"), "intensity": 1.0}
 print(json.dumps(scene))
 PY
-"$PENUMBRA" render two_env.json -t reference --size 32x24 -o two_env.exr --quiet \
+"$PENUMBRA" render two_env.json -t reference --size 32x24 -o two_env_render.exr --quiet \
     -D technique.samples=2 -D technique.env_samples=16
-names=$(oiiotool --info:format=xml -v two_env.exr | grep -o '<channelname>visibility[^<]*' |
+names=$(oiiotool --info:format=xml -v two_env_render.exr | grep -o '<channelname>visibility[^<]*' |
     sed 's/<channelname>//' | tr '\n' ' ')
 [ "$names" = "visibility visibility.0 visibility.1 " ] ||
     fail "per-light channels with an environment: $names"

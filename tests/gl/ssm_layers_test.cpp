@@ -250,6 +250,21 @@ TEST(SsmLayersGL, AWallFacingAwayFromTheLightTakesNoOtherSurfacesLayer) {
     EXPECT_LE(box, 0.015);
 }
 
+TEST(SsmLayersGL, AReceiverFacingAwayFromTheLightIsNotHiddenByItself) {
+    // A random scene nobody tuned on (scripts/random-scenes --kind mixed, mix34; here
+    // ssm_wall_back.json): a wall of role receiver between the light and the camera, whose seen
+    // side faces away from the light. A receiver hides nothing, not even from itself (exact:
+    // lit, nothing else is on the way), but the rule above gave such a pixel the light's share
+    // above its horizon, 0, wherever no layer of its own object matched (the lit side, a wall's
+    // thickness nearer the light): a black block on the wall. Measured 0.101 before, 0 now.
+    const Image exact =
+        renderScene("ssm_wall_back.json", {{"technique", penumbra::testing::kGroundTruth}});
+    const Image img = renderScene("ssm_wall_back.json", {{"technique", ssm(4)}});
+    const double wall = visibilityMae(img, exact, 1, 1);
+    std::printf("ssm, a receiver wall seen from its unlit side: visibility MAE %.4f\n", wall);
+    EXPECT_LE(wall, 0.005);
+}
+
 TEST(SsmLayersGL, AWallNearlyEdgeOnToTheLightMatchesItsOwnLayer) {
     // Random scene rand111's box alone (exact_grazing_wall.json): a wall faces the light's
     // centre nearly edge-on, 0.75 m of it in about one soft-map texel, so its pixels' depths

@@ -2,9 +2,10 @@
 // `ssm` visibility: each camera pixel of a receiver is projected from the light's centre into
 // the soft shadow map (two maps merged by max when two-sided, 3.5); visibility = 1 - occlusion.
 // With several receiver layers, each of the four bilinear texels takes the layer whose receiver
-// depth matches the pixel's, its own object's layers first (a pixel facing away from the
-// light's centre, which no layer holds, takes only those; matching none, it sees the light's
-// part above its horizon); a pixel no layer matches takes the nearest layer, which for a pixel
+// depth matches the pixel's, its own object's layers first (a pixel of a casting object facing
+// away from the light's centre, which no layer holds, takes only those; matching none, it sees
+// the light's part above its horizon; a receiver's, which its object does not hide, matches as
+// a light-facing one); a pixel no layer matches takes the nearest layer, which for a pixel
 // beyond a full stack of layers is the deepest: what shadows that surface shadows the pixel
 // behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are
 // lit. Diagnostic 0: the summed occlusion; 1: the receiver layer used (of the texel weighing
@@ -130,10 +131,14 @@ void main() {
         // layer matched the wall's foot and darkened it). A surface facing away from the
         // light's centre is in no layer (they hold light-facing surfaces), so it matches only
         // its own object's (its lit side next to it, whose occlusion by other casters it
-        // shares); matching none, it sees the light's part above its horizon.
+        // shares); matching none, it sees the light's part above its horizon. Only on objects
+        // that cast: a receiver hides nothing, not even from itself (exact's rays pass through
+        // it), so its pixels facing away match as light-facing ones (a wall between the light
+        // and the camera took 0 where no layer of its own matched: mix34).
         vec3 n = geometricNormal(pix);
         vec3 to_light = u_light_centre - pos.xyz;
-        bool away = dot(n, to_light) <= 0.0;
+        bool casts = objectCasts(id);
+        bool away = casts && dot(n, to_light) <= 0.0;
         // Where none of its own matches, its own within the depth its surface spans over two
         // texels: a face nearly edge-on to the light's centre spans many texels' depth in one
         // (a wall of random scene rand111, 0.75 m high in about a texel: no layer matched and
@@ -159,7 +164,7 @@ void main() {
                 }
             }
             if (away || nearest < 0) {
-                float share = shareAboveHorizon(pos.xyz, n);
+                float share = casts ? shareAboveHorizon(pos.xyz, n) : 1.0;  // a receiver: all
                 o_visibility = vec4(share, 0.0, 0.0, 0.0);
                 o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
                 return;
