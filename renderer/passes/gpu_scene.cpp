@@ -122,6 +122,7 @@ void GpuScene::update(const scene::Scene& scene) {
         g.transform = o.transform;
         g.shadow = o.shadow;
         g.id = static_cast<int>(i);
+        g.mirrored = glm::determinant(glm::mat3(o.transform)) < 0.0f;
         g.world_bounds = g.model->bounds.transformed(o.transform);
         scene_boxes_.push_back(g.world_bounds);
         if (scene::castsShadow(o.shadow)) caster_boxes_.push_back(g.world_bounds);
@@ -153,6 +154,10 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
             gl::setUniform(program, "u_normal_matrix",
                            glm::mat3(glm::inverseTranspose(o.transform)));
         if (ids) gl::setUniform(program, "u_object_id", o.id);
+        // A mirrored transform turns the model's counter-clockwise front faces clockwise: without
+        // this, gl_FrontFacing called every face seen a back face and the G-buffer turned its
+        // normals inward (a duck scaled by -1 along x rendered black).
+        glFrontFace(o.mirrored ? GL_CW : GL_CCW);
         glBindVertexArray(o.model->vao.id());
         for (const auto& d : o.model->draws) {
             size_t m = static_cast<size_t>(d.material) < o.model->base_colors.size()
@@ -172,6 +177,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
                                               d.base_vertex);
         }
     }
+    glFrontFace(GL_CCW);
     glBindVertexArray(0);
 }
 

@@ -61,7 +61,8 @@ struct GpuObject {
     glm::mat4 transform{1.0f};
     scene::ShadowRole shadow = scene::ShadowRole::Both;
     Bounds world_bounds;
-    int id = 0;  // index in Scene::objects
+    int id = 0;             // index in Scene::objects
+    bool mirrored = false;  // the transform's determinant is negative: front faces turn clockwise
 };
 
 class GpuScene {
