@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "renderer/core/error.h"
 #include "renderer/core/json_bounds.h"
+#include "renderer/core/output_paths.h"
 
 namespace penumbra::cli {
 
@@ -143,6 +144,15 @@ CompareArgs parseCompareArgs(const Args& args) {
     if (a.diffScale && !a.diffPng) c.fail("--diff-scale: needs a --diff OUT.png");
     a.ref = files[0];
     a.test = files[1];
+    // A CI job's --diff onto its golden image replaced the golden with the difference.
+    if (!a.diff.empty() && namesAnyOf(a.diff, {a.ref}))
+        c.fail("--diff: '" + quoteText(a.diff) +
+               "' is REF; writing the difference there would "
+               "overwrite it (name another file)");
+    if (!a.diff.empty() && namesAnyOf(a.diff, {a.test}))
+        c.fail("--diff: '" + quoteText(a.diff) +
+               "' is TEST; writing the difference there "
+               "would overwrite it (name another file)");
     return a;
 }
 

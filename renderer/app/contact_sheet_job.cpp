@@ -2,11 +2,15 @@
 #include "renderer/app/contact_sheet_job.h"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "renderer/app/contact_sheet_inputs.h"
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
+#include "renderer/core/json_bounds.h"
 #include "renderer/core/memory_limit.h"
+#include "renderer/core/output_paths.h"
 
 namespace penumbra::app {
 
@@ -18,6 +22,12 @@ int runContactSheetJob(const ContactSheetRequest& req) {
         throw InputError(
             "contact-sheet: no images (give files, a pattern with -f, or --sweep DIR)");
     checkOutputPath(req.out, "-o");
+    std::vector<std::string> read;
+    for (const auto& input : inputs) read.push_back(input.path.string());
+    if (namesAnyOf(req.out.string(), read))  // `-o out/sheet.png out/*.png`, run twice
+        throw InputError("-o: '" + quoteText(req.out.string()) +
+                         "' is one of the images; writing the sheet there would overwrite it "
+                         "(name another file)");
     const std::string font = req.labels ? output::findLabelFont(req.font) : std::string();
 
     // The tile: --tile, else the first picture's size; every picture is scaled to fit it.

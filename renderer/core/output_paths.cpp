@@ -63,4 +63,11 @@ std::string outputIdentity(const std::string& path) {
     return ec ? absolute.lexically_normal().string() : canonical.string();
 }
 
+bool namesAnyOf(const std::string& path, const std::vector<std::string>& files) {
+    const std::string self = outputIdentity(path);
+    for (const std::string& f : files)
+        if (outputIdentity(f) == self) return true;
+    return false;
+}
+
 }  // namespace penumbra

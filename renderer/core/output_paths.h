@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace penumbra {
 
@@ -15,5 +16,9 @@ std::string replaceExtension(std::string_view path, std::string_view ext);
 // What PATH names on disk, to tell whether two outputs clash: absolute and weakly canonical
 // ("./y.exr", "y.exr" and "out/../y.exr" are one file; links followed where they exist).
 std::string outputIdentity(const std::string& path);
+
+// Whether PATH names one of FILES (compared by outputIdentity): an output that would overwrite
+// an input of the same command.
+bool namesAnyOf(const std::string& path, const std::vector<std::string>& files);
 
 }  // namespace penumbra

@@ -127,6 +127,16 @@ run 5 a.exr same.exr --diff-scale 0 --diff d.png
 expect_in err.txt "--diff-scale"
 run 5 a.exr same.exr --diff-scale 1 --diff d.exr
 expect_in err.txt "--diff-scale: needs a --diff OUT.png"
+# diff_overwrites_input: `--diff` onto REF replaced a CI job's golden image with the difference.
+cp a.exr golden.exr && mkdir -p sub
+run 5 golden.exr same.exr --diff ./golden.exr
+expect_in err.txt "penumbra: compare: --diff: './golden.exr' is REF; writing the difference there"
+run 5 same.exr golden.exr --diff sub/../golden.exr
+expect_in err.txt "--diff: 'sub/../golden.exr' is TEST; "
+if ! cmp -s a.exr golden.exr; then
+    echo "FAIL: a refused --diff changed its input" >&2
+    failures=$((failures + 1))
+fi
 run 5 a.exr
 run 5 a.exr same.exr third.exr
 expect_in err.txt "third.exr"

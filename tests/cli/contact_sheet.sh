@@ -76,6 +76,12 @@ expect_exit 2 "memory limit" -- \
     "$PENUMBRA" contact-sheet a.exr a.exr --tile 8000x8000 --memory-limit 64M -o x.png
 expect_exit 2 "more than 65535 pixels a side" -- \
     "$PENUMBRA" contact-sheet a.exr a.exr a.exr a.exr a.exr --columns 5 --tile 16000x10 -o x.png
+# sheet_overwrites_input: `-o` onto one of the images (a glob over the sheet's own folder, run
+# twice) replaced that image with the sheet.
+cp a.exr again.exr
+expect_exit 2 "^penumbra: -o: 'again.exr' is one of the images; writing the sheet there" -- \
+    "$PENUMBRA" contact-sheet a.exr again.exr -o again.exr
+cmp -s a.exr again.exr || fail "a refused sheet changed its input"
 # A sweep.json naming a file outside its folder is refused, not read.
 mkdir evil && printf '{"schema": "penumbra-sweep", "runs": [{"exr": "../a.exr"}]}' >evil/sweep.json
 expect_exit 2 "inside the sweep folder" -- "$PENUMBRA" contact-sheet --sweep evil -o x.png

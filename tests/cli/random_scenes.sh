@@ -14,6 +14,16 @@ done
 # Seeds differ from each other.
 ! cmp -s a/rand7.json a/rand8.json || fail "seeds 7 and 8 wrote the same scene"
 
+# mixed: its own names, deterministic, the duck copied beside them, and every scene renders.
+paths=$("$gen" --kind mixed --seed 5 --count 4 --size 32x24 --out m)
+[ "$paths" = "m/mix5.json,m/mix6.json,m/mix7.json,m/mix8.json" ] || fail "mixed paths: $paths"
+"$gen" --kind mixed --seed 5 --count 4 --size 32x24 --out n >/dev/null
+cmp -s "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" m/assets/duck.glb || fail "no duck in m/assets"
+for k in 5 6 7 8; do
+    cmp "m/mix$k.json" "n/mix$k.json" || fail "mix$k.json differs between two runs"
+    "$PENUMBRA" render "m/mix$k.json" -t hard -o "mix$k.exr" --quiet || fail "mix$k.json"
+done
+expect_exit 2 "--kind: invalid choice" -- "$gen" --kind odd --out c
 expect_exit 2 "--count: 0 is outside" -- "$gen" --count 0 --out c
 expect_exit 2 "--size: expected WxH" -- "$gen" --size 12 --out c
 expect_exit 2 "--out" -- "$gen"
