@@ -4,6 +4,7 @@
 #include <cctype>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/commands.h"
@@ -145,14 +146,10 @@ CompareArgs parseCompareArgs(const Args& args) {
     a.ref = files[0];
     a.test = files[1];
     // A CI job's --diff onto its golden image replaced the golden with the difference.
-    if (!a.diff.empty() && namesAnyOf(a.diff, {a.ref}))
-        c.fail("--diff: '" + quoteText(a.diff) +
-               "' is REF; writing the difference there would "
-               "overwrite it (name another file)");
-    if (!a.diff.empty() && namesAnyOf(a.diff, {a.test}))
-        c.fail("--diff: '" + quoteText(a.diff) +
-               "' is TEST; writing the difference there "
-               "would overwrite it (name another file)");
+    for (const auto& [name, input] : {std::pair{"REF", a.ref}, std::pair{"TEST", a.test}})
+        if (!a.diff.empty() && namesAnyOf(a.diff, {input}))
+            c.fail("--diff: '" + quoteText(a.diff) + "' is " + name +
+                   "; writing the difference there would overwrite it (name another file)");
     return a;
 }
 

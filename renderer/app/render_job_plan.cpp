@@ -141,6 +141,7 @@ std::vector<FramePlan> planFrames(const RenderRequest& req, const std::string& s
 
 void checkOutputsAreNotInputs(const RenderRequest& req, const std::vector<FramePlan>& plans,
                               const std::vector<std::string>& inputs) {
+    const std::set<std::string> read = outputIdentities(inputs);  // once, not per output
     const std::string timing_flag = req.timings ? "--timings" : "--output";
     const std::string timing_what = req.timings ? "" : " (its timing JSON)";
     for (const FramePlan& p : plans)
@@ -148,7 +149,7 @@ void checkOutputsAreNotInputs(const RenderRequest& req, const std::vector<FrameP
              {std::tuple{p.exr, std::string("--output"), std::string()},
               std::tuple{p.timing, timing_flag, timing_what},
               std::tuple{p.preview, std::string("--preview"), std::string()}}) {
-            if (path.empty() || !namesAnyOf(path, inputs)) continue;
+            if (path.empty() || !read.count(outputIdentity(path))) continue;
             throw InputError(flag + ": '" + quoteText(path) + "'" + what +
                              " is a file the scene reads; writing it would overwrite that input "
                              "(name another output)");

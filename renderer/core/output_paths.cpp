@@ -63,11 +63,14 @@ std::string outputIdentity(const std::string& path) {
     return ec ? absolute.lexically_normal().string() : canonical.string();
 }
 
+std::set<std::string> outputIdentities(const std::vector<std::string>& files) {
+    std::set<std::string> out;
+    for (const std::string& f : files) out.insert(outputIdentity(f));
+    return out;
+}
+
 bool namesAnyOf(const std::string& path, const std::vector<std::string>& files) {
-    const std::string self = outputIdentity(path);
-    for (const std::string& f : files)
-        if (outputIdentity(f) == self) return true;
-    return false;
+    return outputIdentities(files).count(outputIdentity(path)) > 0;
 }
 
 }  // namespace penumbra

@@ -25,15 +25,16 @@ TEST(MirroredTransformGL, AMirroredBoxRendersAsItsUnmirroredSelf) {
         const Image mirrored =
             renderScene("both_box.json",
                         {{"technique", technique}, {"objects.1.transform.scale", "[-1, 1, 1]"}});
-        const auto& id = channel(plain, "id");
+        const auto &id = channel(plain, "id"), &id_m = channel(mirrored, "id");
+        const auto &r = channel(plain, "R"), &r_m = channel(mirrored, "R");
+        const auto &v = channel(plain, "visibility"), &v_m = channel(mirrored, "visibility");
         double beauty = 0, visibility = 0, sum = 0, worst_dot = 1;
         long n = 0;
         for (size_t i = 0; i < id.size(); ++i) {
-            if (id[i] != 1 || channel(mirrored, "id")[i] != 1) continue;
-            beauty += std::fabs(channel(plain, "R")[i] - channel(mirrored, "R")[i]);
-            sum += channel(plain, "R")[i];
-            visibility +=
-                std::fabs(channel(plain, "visibility")[i] - channel(mirrored, "visibility")[i]);
+            if (id[i] != 1 || id_m[i] != 1) continue;
+            beauty += std::fabs(r[i] - r_m[i]);
+            sum += r[i];
+            visibility += std::fabs(v[i] - v_m[i]);
             double dot = 0;
             for (const char* c : {"N.X", "N.Y", "N.Z"})
                 dot += double(channel(plain, c)[i]) * channel(mirrored, c)[i];

@@ -43,6 +43,12 @@ double visibilityMae(const Image& img, const Image& exact, int first, int last) 
     return n > 0 ? sum / n : 0.0;
 }
 
+// ssm (4 layers) and exact on SCENE: ssm's visibility MAE over objects FIRST..LAST.
+double ssmMaeAgainstExact(const std::string& scene, int first, int last) {
+    const Image exact = renderScene(scene, {{"technique", penumbra::testing::kGroundTruth}});
+    return visibilityMae(renderScene(scene, {{"technique", ssm(4)}}), exact, first, last);
+}
+
 }  // namespace
 
 TEST(SsmLayersGL, BothObjectsShadowTheFloorAndReceive) {
@@ -209,10 +215,7 @@ TEST(SsmLayersGL, ABothObjectHidesTheLightBelowItsOwnHorizon) {
     // itself hides that part (exact's rays hit it), while its patches never shadow the surface
     // they lie on: the horizon's share in closed form brings the box's visibility to exact's.
     // Measured 0.0008; before, the side faces were lit: 0.023 (0.035 under a 1 m light).
-    const Image exact =
-        renderScene("both_box.json", {{"technique", penumbra::testing::kGroundTruth}});
-    const Image img = renderScene("both_box.json", {{"technique", ssm(4)}});
-    const double mae = visibilityMae(img, exact, 1, 1);
+    const double mae = ssmMaeAgainstExact("both_box.json", 1, 1);
     std::printf("ssm, a both box: visibility MAE over the box %.4f\n", mae);
     EXPECT_LE(mae, 0.005);
 }
@@ -242,10 +245,7 @@ TEST(SsmLayersGL, AWallFacingAwayFromTheLightTakesNoOtherSurfacesLayer) {
     // away from the centre now matches only its own object's layers (a ball's terminator under
     // a table still takes the table's shadow from the ball's lit side), else it takes the
     // horizon share. Measured 0.0029 (0.0272 before).
-    const Image exact =
-        renderScene("ssm_edge_on_wall.json", {{"technique", penumbra::testing::kGroundTruth}});
-    const Image img = renderScene("ssm_edge_on_wall.json", {{"technique", ssm(4)}});
-    const double box = visibilityMae(img, exact, 1, 1);
+    const double box = ssmMaeAgainstExact("ssm_edge_on_wall.json", 1, 1);
     std::printf("ssm, a wall facing away from the light: the box's visibility MAE %.4f\n", box);
     EXPECT_LE(box, 0.015);
 }
@@ -257,10 +257,7 @@ TEST(SsmLayersGL, AReceiverFacingAwayFromTheLightIsNotHiddenByItself) {
     // lit, nothing else is on the way), but the rule above gave such a pixel the light's share
     // above its horizon, 0, wherever no layer of its own object matched (the lit side, a wall's
     // thickness nearer the light): a black block on the wall. Measured 0.101 before, 0 now.
-    const Image exact =
-        renderScene("ssm_wall_back.json", {{"technique", penumbra::testing::kGroundTruth}});
-    const Image img = renderScene("ssm_wall_back.json", {{"technique", ssm(4)}});
-    const double wall = visibilityMae(img, exact, 1, 1);
+    const double wall = ssmMaeAgainstExact("ssm_wall_back.json", 1, 1);
     std::printf("ssm, a receiver wall seen from its unlit side: visibility MAE %.4f\n", wall);
     EXPECT_LE(wall, 0.005);
 }
