@@ -127,7 +127,8 @@ class Defaults:
 
 
 def sweep(b, scene, label, technique, fixed, varied, root):
-    """Runs (or resumes) one sweep folder; its sweep.json document."""
+    """Runs (or resumes) one sweep folder; its sweep.json document, or None where the sweep
+    failed (a technique a driver refuses leaves the other techniques' figures standing)."""
     folder = os.path.join(root, scene, label)
     cmd = [b.binary, "sweep", os.path.join(ROOT, "scenes", "conformance", f"{scene}.json"),
            "-t", technique, "--size", b.size, "--warmup", "1", "--repeat", str(b.repeat),
@@ -138,7 +139,10 @@ def sweep(b, scene, label, technique, fixed, varied, root):
         cmd += ["--vary", v]
     start = time.monotonic()
     if subprocess.run(cmd).returncode != 0:
-        raise SystemExit(f"bench: pareto: the sweep of {label} on {scene} failed ({folder})")
+        print(f"bench: pareto: the sweep of {label} on {scene} failed ({folder}); its runs are "
+              "left out", flush=True)
+        b.failed.append(f"{scene} {label}")
+        return folder, None
     with open(os.path.join(folder, "sweep.json"), encoding="utf-8") as f:
         doc = json.load(f)
     print(f"pareto: {scene} {label}: {len(doc['runs'])} runs in {time.monotonic() - start:.0f} s",
@@ -174,6 +178,8 @@ def scene_rows(b, scene, root, samples, defaults, techniques):
     """Every sweep of SCENE: (rows, folders, reference front, penumbra share)."""
     folder, ref = sweep(b, scene, "reference", "reference", {},
                         ["technique.samples=" + ",".join(str(n) for n in samples)], root)
+    if ref is None:
+        raise SystemExit(f"bench: pareto: no reference on {scene}: no ratio can be computed")
     folders = [folder]
     refs = [(r["values"]["technique.samples"], error_of(r), r["time_ms"].get("total"))
             for r in ref["runs"]]
@@ -187,6 +193,8 @@ def scene_rows(b, scene, root, samples, defaults, techniques):
         if technique not in techniques:
             continue
         folder, doc = sweep(b, scene, label, technique, fixed, varied, root)
+        if doc is None:
+            continue
         folders.append(folder)
         for r in doc["runs"]:
             err, ms = error_of(r), r["time_ms"].get("total")
@@ -303,6 +311,7 @@ def pareto(b):
     root = os.path.join(b.out, "pareto")
     os.makedirs(root, exist_ok=True)
     defaults, rows, folders, shares, fronts = Defaults(b.binary), [], [], {}, {}
+    b.failed = []
     for scene in scenes:
         r, f, fronts[scene], shares[scene] = scene_rows(b, scene, root, samples, defaults,
                                                                 b.args.pareto_techniques)
@@ -326,3 +335,6 @@ def pareto(b):
         raise SystemExit(f"bench: pareto: scripts/sweep-report failed: {r.stderr.strip()}")
     print(f"\n{root}/pareto.json, pareto.csv; error against time with every technique's front: "
           f"{report}/index.html (plots/error-vs-time-g*.png)")
+    if b.failed:
+        raise SystemExit("bench: pareto: these sweeps failed and are left out: " +
+                         ", ".join(b.failed))
