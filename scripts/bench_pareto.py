@@ -28,6 +28,7 @@ import os
 import shutil
 import statistics
 import subprocess
+import sys
 import time
 
 import equal_error as ee
@@ -69,6 +70,10 @@ def add_arguments(p):
     p.add_argument("--pareto-techniques", type=parse_techniques, default=TECHNIQUES,
                    help="pareto: the techniques swept besides reference, comma-separated "
                    f"(default: {','.join(TECHNIQUES)})")
+    p.add_argument("--pareto-from", metavar="DIR",
+                   help="pareto: render nothing; the tables from DIR/SCENE/SWEEP/sweep.csv (the "
+                   "sweeps of an earlier run, e.g. device-bench's pareto-sweeps.tar.gz unpacked: "
+                   "DIR is its pareto/ folder); a sweep missing there is left out")
 
 
 def parse_scenes(text):
@@ -126,9 +131,37 @@ class Defaults:
         return not fixed and all(d.get(k.split(".", 1)[1]) == v for k, v in values.items())
 
 
+def csv_value(text):
+    """A sweep.csv cell as sweep.json has it: JSON where it parses (5, 0.02, false, null),
+    else the word."""
+    try:
+        return json.loads(text)
+    except ValueError:
+        return text
+
+
+def sweep_from_csv(b, scene, label):
+    """The sweep.json document's fields this suite reads, from --pareto-from's sweep.csv; None
+    where that sweep is missing."""
+    path = os.path.join(b.args.pareto_from, scene, label, "sweep.csv")
+    if not os.path.isfile(path):
+        print(f"bench: pareto: no {path}; {label} on {scene} is left out", flush=True)
+        b.failed.append(f"{scene} {label}")
+        return None
+    with open(path, encoding="utf-8", newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {"runs": [{"values": {k: csv_value(v) for k, v in r.items()
+                                 if k.startswith("technique.")},
+                      "metrics": {k: csv_value(r.get(k, "null")) for k in ("shadow_mae", "mae")},
+                      "time_ms": {"total": csv_value(r.get("total_ms", "null"))},
+                      "reference": None} for r in rows]}
+
+
 def sweep(b, scene, label, technique, fixed, varied, root):
     """Runs (or resumes) one sweep folder; its sweep.json document, or None where the sweep
     failed (a technique a driver refuses leaves the other techniques' figures standing)."""
+    if b.args.pareto_from:
+        return None, sweep_from_csv(b, scene, label)
     folder = os.path.join(root, scene, label)
     cmd = [b.binary, "sweep", os.path.join(ROOT, "scenes", "conformance", f"{scene}.json"),
            "-t", technique, "--size", b.size, "--warmup", "1", "--repeat", str(b.repeat),
@@ -158,8 +191,9 @@ def error_of(run):
 
 def penumbra_share(exr):
     """Share of EXR's pixels whose visibility is strictly between 0 and 1 (oiiotool); None
-    where oiiotool is missing (a GPU machine with only the renderer carried to it)."""
-    if not shutil.which("oiiotool"):
+    where oiiotool is missing (a GPU machine with only the renderer carried to it) or there is
+    no image (--pareto-from)."""
+    if exr is None or not shutil.which("oiiotool"):
         return None
     r = subprocess.run(["oiiotool", exr, "--ch", "visibility", "--rangecheck", "0.0001",
                         "0.9999"], capture_output=True, text=True, check=True)
@@ -180,7 +214,7 @@ def scene_rows(b, scene, root, samples, defaults, techniques):
                         ["technique.samples=" + ",".join(str(n) for n in samples)], root)
     if ref is None:
         raise SystemExit(f"bench: pareto: no reference on {scene}: no ratio can be computed")
-    folders = [folder]
+    folders = [folder] if folder else []
     refs = [(r["values"]["technique.samples"], error_of(r), r["time_ms"].get("total"))
             for r in ref["runs"]]
     front = ee.reference_front(refs)
@@ -195,7 +229,8 @@ def scene_rows(b, scene, root, samples, defaults, techniques):
         folder, doc = sweep(b, scene, label, technique, fixed, varied, root)
         if doc is None:
             continue
-        folders.append(folder)
+        if folder:
+            folders.append(folder)
         for r in doc["runs"]:
             err, ms = error_of(r), r["time_ms"].get("total")
             if err is None or ms is None:
@@ -327,14 +362,25 @@ def pareto(b):
     write(root, rows, {"size": b.size, "repeat": b.repeat, "version": version.strip(),
                        "date": time.strftime("%Y-%m-%d"), "penumbra_share": shares,
                        "reference_fronts": fronts})
-    report = os.path.join(root, "report")
-    # matplotlib warns about every crowded parameter plot: its output only where it fails.
-    r = subprocess.run([os.path.join(ROOT, "scripts", "sweep-report"), *folders, "-o", report],
-                       capture_output=True, text=True)
-    if r.returncode != 0:
-        raise SystemExit(f"bench: pareto: scripts/sweep-report failed: {r.stderr.strip()}")
-    print(f"\n{root}/pareto.json, pareto.csv; error against time with every technique's front: "
-          f"{report}/index.html (plots/error-vs-time-g*.png)")
+    if b.args.pareto_from:
+        print(f"\n{root}/pareto.json, pareto.csv (from {b.args.pareto_from}; no report: "
+              "sweep.csv holds no images)")
+    else:
+        report(root, folders)
     if b.failed:
         raise SystemExit("bench: pareto: these sweeps failed and are left out: " +
                          ", ".join(b.failed))
+
+
+def report(root, folders):
+    """scripts/sweep-report over the sweep folders: ROOT/report."""
+    out = os.path.join(root, "report")
+    # matplotlib warns about every crowded parameter plot: its output only where it fails.
+    # This interpreter, not the script's /usr/bin/python3: a GPU machine's matplotlib may be
+    # only in the Python that runs the bench.
+    r = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "sweep-report"), *folders,
+                        "-o", out], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise SystemExit(f"bench: pareto: scripts/sweep-report failed: {r.stderr.strip()}")
+    print(f"\n{root}/pareto.json, pareto.csv; error against time with every technique's front: "
+          f"{out}/index.html (plots/error-vs-time-g*.png)")
