@@ -46,27 +46,22 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         const double per_pixel = shadowed_ > 0 ? kErrorCalibration * bits.scale / shadowed_ : 0.0;
         if (rss_estimate_) budget.emplace(target_error_, bits.pixels, per_pixel);
     }
+    const Disagreements found = bits.disagreements(pairs);
     std::vector<double> errors;
-    std::vector<std::vector<std::uint32_t>> where;
-    std::vector<std::uint32_t> any;  // the diagnostic: pixels where some cell disagrees
     for (size_t i = 0; i < cells.size(); ++i) {
         r.comparisons += int(pairs[i].size());
-        where.push_back(bits.disagreeing(pairs[i]));
         errors.push_back(kDisagreementError *
                          std::ldexp(1.0, -(tree.linear() ? 1 : 2) * cells[i].depth));
-        any.insert(any.end(), where.back().begin(), where.back().end());
     }
-    if (!light_centre_) map_compare_->raiseLevels(any, level);
+    // The diagnostic: the pixels where some cell disagrees.
+    if (!light_centre_) map_compare_->raiseLevels(found.anywhere, level);
     if (!rss_estimate_) {  // the sum: each cell's worse diagonal, as the queries count it
         std::vector<CompareResult> counts;
-        for (size_t i = 0; i < cells.size(); ++i)
-            for (const auto& pair : pairs[i])
-                counts.push_back(
-                    {double(bits.disagreeing(std::span(&pair, 1)).size()) * bits.scale, 0.0});
+        for (size_t n : found.pairs) counts.push_back({double(n) * bits.scale, 0.0});
         return splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
     }
     std::vector<QuadtreeCell> next;
-    for (size_t i : budget->choose(errors, where)) {
+    for (size_t i : budget->choose(errors, found.where)) {
         if (!fitsMapBudget(tree, cells[i])) {
             r.budget_hit = true;
             budget->refused(i);

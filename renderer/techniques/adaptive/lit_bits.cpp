@@ -125,24 +125,24 @@ ShadowBits LitBits::read(int views, int stride) const {
     out.pixels = size_t(w) * size_t(h);
     out.words = std::clamp((views + 31) / 32, 1, planes_);
     out.scale = double(stride) * double(stride);
-    out.bits.assign(out.pixels * size_t(out.words), 0u);
-    if (stride == 1 && out.words == 1) {  // the layout is the same: no gather
-        glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(plane * sizeof(GLuint)), out.bits.data());
+    out.bits.resize(out.pixels * size_t(out.words));
+    if (stride == 1) {  // the buffer's layout, word-major: no gather
+        glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(out.bits.size() * sizeof(GLuint)),
+                                out.bits.data());
         out.index();
         return out;
     }
     std::vector<GLuint> all(plane * size_t(out.words));
     glGetNamedBufferSubData(bits_.id(), 0, GLsizeiptr(all.size() * sizeof(GLuint)), all.data());
-    for (int y = 0; y < h; ++y) {
-        const size_t sy = size_t(std::min(y * stride + stride / 2, height_ - 1));
-        for (int x = 0; x < w; ++x) {
-            const size_t sx = size_t(std::min(x * stride + stride / 2, width_ - 1));
-            const size_t p = size_t(y) * size_t(w) + size_t(x);
-            for (int k = 0; k < out.words; ++k)
-                out.bits[p * size_t(out.words) + size_t(k)] =
+    for (int k = 0; k < out.words; ++k)
+        for (int y = 0; y < h; ++y) {
+            const size_t sy = size_t(std::min(y * stride + stride / 2, height_ - 1));
+            for (int x = 0; x < w; ++x) {
+                const size_t sx = size_t(std::min(x * stride + stride / 2, width_ - 1));
+                out.bits[size_t(k) * out.pixels + size_t(y) * size_t(w) + size_t(x)] =
                     all[size_t(k) * plane + sy * size_t(width_) + sx];
+            }
         }
-    }
     out.index();
     return out;
 }

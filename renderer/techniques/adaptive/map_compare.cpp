@@ -127,7 +127,7 @@ ShadowBits MapCompare::shadowBits(const passes::GBuffer& gbuffer,
                           GLsizei(chunk.size() * sizeof(GLuint)), chunk.data());
         for (size_t p = 0; p < out.pixels; ++p)
             for (size_t w = 0; w < 4; ++w)
-                out.bits[p * size_t(out.words) + size_t(4 * k) + w] = chunk[4 * p + w];
+                out.bits[(size_t(4 * k) + w) * out.pixels + p] = chunk[4 * p + w];
     }
     glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, 0);
     glUseProgram(0);

@@ -2,15 +2,16 @@
 #include "renderer/techniques/adaptive/shadow_bits.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace penumbra::techniques::adaptive {
 
 void ShadowBits::index() {
     active.clear();
     for (size_t p = 0; p < pixels; ++p) {
-        const std::uint32_t* w = &bits[p * size_t(words)];
-        if (std::any_of(w, w + words, [](std::uint32_t v) { return v != 0; }))
-            active.push_back(std::uint32_t(p));
+        std::uint32_t any = 0;
+        for (size_t k = 0; k < size_t(words); ++k) any |= bits[k * pixels + p];
+        if (any) active.push_back(std::uint32_t(p));
     }
 }
 
@@ -26,13 +27,52 @@ double ShadowBits::anyShadowed(std::span<const int> slots) const {
 
 std::vector<std::uint32_t> ShadowBits::disagreeing(
     std::span<const std::pair<int, int>> pairs) const {
-    std::vector<std::uint32_t> out;
-    for (size_t p : active)
-        for (auto [a, b] : pairs)
-            if (shadowed(p, a) != shadowed(p, b)) {
-                out.push_back(std::uint32_t(p));
-                break;
+    const std::vector<std::pair<int, int>> group(pairs.begin(), pairs.end());
+    return std::move(disagreements(std::span(&group, 1)).where[0]);
+}
+
+Disagreements ShadowBits::disagreements(
+    std::span<const std::vector<std::pair<int, int>>> groups) const {
+    // Blocks of active pixels, their words packed word-major: the loops over a block's pixels
+    // below are plain array arithmetic the compiler vectorises, on data that stays in cache.
+    constexpr size_t kBlock = 2048;
+    Disagreements out;
+    out.where.resize(groups.size());
+    size_t pairs = 0;
+    for (const auto& group : groups) pairs += group.size();
+    out.pairs.assign(pairs, 0);
+    std::vector<std::uint32_t> packed(static_cast<size_t>(words) * kBlock);
+    std::vector<std::uint8_t> any(kBlock), anywhere(kBlock);
+    for (size_t first = 0; first < active.size(); first += kBlock) {
+        const size_t n = std::min(kBlock, active.size() - first);
+        for (size_t k = 0; k < size_t(words); ++k)
+            for (size_t j = 0; j < n; ++j)
+                packed[k * kBlock + j] = bits[k * pixels + active[first + j]];
+        std::fill_n(anywhere.begin(), n, std::uint8_t{0});
+        size_t q = 0;  // the pair's index in out.pairs
+        for (size_t g = 0; g < groups.size(); ++g) {
+            std::fill_n(any.begin(), n, std::uint8_t{0});
+            for (auto [a, b] : groups[g]) {
+                const std::uint32_t* wa = &packed[size_t(a >> 5) * kBlock];
+                const std::uint32_t* wb = &packed[size_t(b >> 5) * kBlock];
+                const unsigned sa = unsigned(a & 31), sb = unsigned(b & 31);
+                size_t count = 0;
+                for (size_t j = 0; j < n; ++j) {
+                    const std::uint32_t d = ((wa[j] >> sa) ^ (wb[j] >> sb)) & 1u;
+                    count += d;
+                    any[j] |= std::uint8_t(d);
+                }
+                out.pairs[q++] += count;
             }
+            for (size_t j = 0; j < n; ++j)
+                if (any[j]) {
+                    out.where[g].push_back(active[first + j]);
+                    anywhere[j] = 1;
+                }
+        }
+        for (size_t j = 0; j < n; ++j)
+            if (anywhere[j]) out.anywhere.push_back(active[first + j]);
+    }
     return out;
 }
 

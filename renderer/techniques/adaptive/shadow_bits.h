@@ -10,11 +10,19 @@
 
 namespace penumbra::techniques::adaptive {
 
+// What one pass over the shadowed pixels finds for groups of slot pairs (a cell's diagonals).
+struct Disagreements {
+    std::vector<std::vector<std::uint32_t>> where;  // per group: pixels where any pair disagrees
+    std::vector<std::size_t> pairs;       // per pair, the groups' in order: its disagreeing pixels
+    std::vector<std::uint32_t> anywhere;  // pixels where some pair of some group disagrees
+};
+
 struct ShadowBits {
-    size_t pixels = 0;                // comparison-view pixels
-    int words = 0;                    // uint32 per pixel: bit i of word i / 32 is map slot i
-    double scale = 1;                 // G-buffer pixels each comparison pixel stands for (stride^2)
-    std::vector<std::uint32_t> bits;  // pixel-major
+    size_t pixels = 0;  // comparison-view pixels
+    int words = 0;      // uint32 per pixel: bit i of word i / 32 is map slot i
+    double scale = 1;   // G-buffer pixels each comparison pixel stands for (stride^2)
+    // Word-major (word k of pixel p at k * pixels + p): LitBits' layout, read back as it is.
+    std::vector<std::uint32_t> bits;
     // The pixels some slot shadows, ascending (index()); the counts below visit only these: a
     // pixel no map shadows (most of an image) can neither disagree nor count as shadowed.
     std::vector<std::uint32_t> active;
@@ -22,12 +30,15 @@ struct ShadowBits {
     // Fills ACTIVE from BITS; the producers call it once the bits are in.
     void index();
     bool shadowed(size_t pixel, int slot) const {
-        return (bits[pixel * size_t(words) + size_t(slot >> 5)] >> (slot & 31)) & 1u;
+        return (bits[size_t(slot >> 5) * pixels + pixel] >> (slot & 31)) & 1u;
     }
     // Pixels (x scale) that any of SLOTS shadows.
     double anyShadowed(std::span<const int> slots) const;
     // The pixels (indices) where any of PAIRS of slots disagrees.
     std::vector<std::uint32_t> disagreeing(std::span<const std::pair<int, int>> pairs) const;
+    // For each group of pairs of slots, the pixels where any of its pairs disagrees, and each
+    // pair's count, in one pass over the active pixels (the refinement's per-level cost).
+    Disagreements disagreements(std::span<const std::vector<std::pair<int, int>>> groups) const;
 };
 
 }  // namespace penumbra::techniques::adaptive

@@ -3,8 +3,10 @@
 // met, and the bits' counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
@@ -54,12 +56,13 @@ TEST(PixelErrorBudget, NothingShadowedNothingToSplit) {
 
 TEST(ShadowBits, CountsAndDisagreements) {
     // Four pixels, two words each (slot 33 in the second word), every pixel standing for 4;
-    // pixel 3 is shadowed by no slot, so index() leaves it out.
+    // pixel 3 is shadowed by no slot, so index() leaves it out. Word-major: pixels 0-3 of word
+    // 0, then of word 1.
     ShadowBits bits;
     bits.pixels = 4;
     bits.words = 2;
     bits.scale = 4;
-    bits.bits = {0b01u, 0u, 0b10u, 1u << 1, 0b11u, 0u, 0u, 0u};
+    bits.bits = {0b01u, 0b10u, 0b11u, 0u, 0u, 1u << 1, 0u, 0u};
     bits.index();
     EXPECT_EQ(bits.active, (std::vector<std::uint32_t>{0, 1, 2}));
     EXPECT_TRUE(bits.shadowed(0, 0));
@@ -72,6 +75,60 @@ TEST(ShadowBits, CountsAndDisagreements) {
     EXPECT_EQ(bits.disagreeing(pairs), (std::vector<std::uint32_t>{0, 1}));
     const std::vector<std::pair<int, int>> two = {{0, 1}, {1, 33}};
     EXPECT_EQ(bits.disagreeing(two), (std::vector<std::uint32_t>{0, 1, 2}));
+    // Per group and per pair in one pass: (0, 1) disagrees at pixels 0 and 1, (1, 33) at 2.
+    const std::vector<std::vector<std::pair<int, int>>> groups = {{{0, 1}}, {{1, 33}}};
+    const Disagreements found = bits.disagreements(groups);
+    EXPECT_EQ(found.where[0], (std::vector<std::uint32_t>{0, 1}));
+    EXPECT_EQ(found.where[1], (std::vector<std::uint32_t>{2}));
+    EXPECT_EQ(found.pairs, (std::vector<std::size_t>{2, 1}));
+    EXPECT_EQ(found.anywhere, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(ShadowBits, OnePassAgreesWithEveryPairTestedAlone) {
+    // Random bits over 70 slots (3 words), a third of the pixels in every slot's shadow or in
+    // none (the pass skips those); groups of up to three pairs, as a level's cells.
+    std::mt19937 rng(7);
+    ShadowBits bits;
+    bits.pixels = 500;
+    bits.words = 3;
+    bits.bits.resize(bits.pixels * 3);
+    for (size_t p = 0; p < bits.pixels; ++p)
+        for (size_t k = 0; k < 3; ++k)
+            bits.bits[k * bits.pixels + p] = p % 3 == 0   ? 0u
+                                             : p % 3 == 1 ? std::uint32_t(rng())
+                                             : k < 2      ? ~0u
+                                                          : 0x3fu;  // slots 64-69
+    bits.index();
+    std::vector<std::vector<std::pair<int, int>>> groups(40);
+    for (auto& g : groups)
+        for (int n = 1 + int(rng() % 3); n > 0; --n)
+            g.push_back({int(rng() % 70), int(rng() % 70)});
+    const Disagreements found = bits.disagreements(groups);
+    std::vector<std::uint32_t> anywhere;
+    for (size_t p : bits.active)
+        for (const auto& group : groups)
+            if (std::any_of(group.begin(), group.end(), [&](std::pair<int, int> q) {
+                    return bits.shadowed(p, q.first) != bits.shadowed(p, q.second);
+                })) {
+                anywhere.push_back(std::uint32_t(p));
+                break;
+            }
+    EXPECT_EQ(found.anywhere, anywhere);
+    for (size_t g = 0, j = 0; g < groups.size(); ++g) {
+        std::vector<std::uint32_t> where;
+        for (size_t p : bits.active) {
+            bool any = false;
+            for (auto [a, b] : groups[g]) any = any || bits.shadowed(p, a) != bits.shadowed(p, b);
+            if (any) where.push_back(std::uint32_t(p));
+        }
+        EXPECT_EQ(found.where[g], where) << "group " << g;
+        for (auto [a, b] : groups[g]) {
+            size_t n = 0;
+            for (size_t p = 0; p < bits.pixels; ++p)
+                n += bits.shadowed(p, a) != bits.shadowed(p, b);
+            EXPECT_EQ(found.pairs[j++], n) << "pair " << a << ", " << b;
+        }
+    }
 }
 
 }  // namespace
