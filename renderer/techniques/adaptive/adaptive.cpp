@@ -242,6 +242,8 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
         st["tested_pixels"] = st.value("tested_pixels", 0.0) + *tested;
     if (error_metric_)
         st["estimated_error"] = std::max(st.value("estimated_error", 0.0), r.estimated_error);
+    // CPU work between passes, which a GPU's timer queries leave out or put in a pass's time.
+    if (r.cpu_ms > 0) st["refine_cpu_ms"] = st.value("refine_cpu_ms", 0.0) + r.cpu_ms;
 }
 
 // Adds the weighted tests of BATCH's COUNT views from VIEW_BASE to the bound visibility.

@@ -157,6 +157,7 @@ struct Refinement {
     int queries = 0;  // occlusion queries (the bits path compares on the CPU)
     bool budget_hit = false;
     double estimated_error = 0.0;  // metric "error"
+    double cpu_ms = 0.0;  // the bits path's comparisons and choices on the CPU (steady clock)
 };
 
 class Adaptive final : public Technique {

@@ -1,6 +1,7 @@
 // `adaptive`'s default refinement (metric "error" on hard tests): the bits of which of the level's
 // corner maps shadow each pixel (LitBits' or one pass over the array), the CPU's comparison of
 // every cell's diagonals on them and the error budget's choice of cells to split (adaptive.h).
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -41,24 +42,36 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         map_compare_->resize(receivers, compare_.stride);  // for raiseLevels()
         bits = lit_bits_->read(int(views_.size()), compare_.stride);
     });
+    // The CPU's work on the bits (r.cpu_ms), less raiseLevels()' upload.
+    auto cpu_start = std::chrono::steady_clock::now();
+    auto addCpuTime = [&] {
+        const auto now = std::chrono::steady_clock::now();
+        r.cpu_ms += std::chrono::duration<double, std::milli>(now - cpu_start).count();
+        cpu_start = now;
+    };
     if (level == 0) {
         shadowed_ = bits.anyShadowed(corners);
         const double per_pixel = shadowed_ > 0 ? kErrorCalibration * bits.scale / shadowed_ : 0.0;
         if (rss_estimate_) budget.emplace(target_error_, bits.pixels, per_pixel);
     }
-    const Disagreements found = bits.disagreements(pairs);
+    // The sum needs each pair's count alone; the per-pixel budget, where each cell disagrees.
+    const Disagreements found = bits.disagreements(pairs, rss_estimate_);
     std::vector<double> errors;
     for (size_t i = 0; i < cells.size(); ++i) {
         r.comparisons += int(pairs[i].size());
         errors.push_back(kDisagreementError *
                          std::ldexp(1.0, -(tree.linear() ? 1 : 2) * cells[i].depth));
     }
+    addCpuTime();
     // The diagnostic: the pixels where some cell disagrees.
     if (!light_centre_) map_compare_->raiseLevels(found.anywhere, level);
+    cpu_start = std::chrono::steady_clock::now();
     if (!rss_estimate_) {  // the sum: each cell's worse diagonal, as the queries count it
         std::vector<CompareResult> counts;
         for (size_t n : found.pairs) counts.push_back({double(n) * bits.scale, 0.0});
-        return splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
+        auto next = splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
+        addCpuTime();
+        return next;
     }
     std::vector<QuadtreeCell> next;
     for (size_t i : budget->choose(errors, found.where)) {
@@ -69,6 +82,7 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         }
         for (const auto& child : tree.split(cells[i])) next.push_back(child);
     }
+    addCpuTime();
     return next;
 }
 

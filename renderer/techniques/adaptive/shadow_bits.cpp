@@ -31,8 +31,8 @@ std::vector<std::uint32_t> ShadowBits::disagreeing(
     return std::move(disagreements(std::span(&group, 1)).where[0]);
 }
 
-Disagreements ShadowBits::disagreements(
-    std::span<const std::vector<std::pair<int, int>>> groups) const {
+Disagreements ShadowBits::disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
+                                        bool where) const {
     // Blocks of active pixels, their words packed word-major: the loops over a block's pixels
     // below are plain array arithmetic the compiler vectorises, on data that stays in cache.
     constexpr size_t kBlock = 2048;
@@ -66,7 +66,7 @@ Disagreements ShadowBits::disagreements(
             }
             for (size_t j = 0; j < n; ++j)
                 if (any[j]) {
-                    out.where[g].push_back(active[first + j]);
+                    if (where) out.where[g].push_back(active[first + j]);
                     anywhere[j] = 1;
                 }
         }

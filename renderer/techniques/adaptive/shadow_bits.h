@@ -36,9 +36,11 @@ struct ShadowBits {
     double anyShadowed(std::span<const int> slots) const;
     // The pixels (indices) where any of PAIRS of slots disagrees.
     std::vector<std::uint32_t> disagreeing(std::span<const std::pair<int, int>> pairs) const;
-    // For each group of pairs of slots, the pixels where any of its pairs disagrees, and each
-    // pair's count, in one pass over the active pixels (the refinement's per-level cost).
-    Disagreements disagreements(std::span<const std::vector<std::pair<int, int>>> groups) const;
+    // For each group of pairs of slots, the pixels where any of its pairs disagrees (left
+    // empty without WHERE), and each pair's count, in one pass over the active pixels (the
+    // refinement's per-level cost).
+    Disagreements disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
+                                bool where = true) const;
 };
 
 }  // namespace penumbra::techniques::adaptive

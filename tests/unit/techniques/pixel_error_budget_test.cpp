@@ -82,6 +82,11 @@ TEST(ShadowBits, CountsAndDisagreements) {
     EXPECT_EQ(found.where[1], (std::vector<std::uint32_t>{2}));
     EXPECT_EQ(found.pairs, (std::vector<std::size_t>{2, 1}));
     EXPECT_EQ(found.anywhere, (std::vector<std::uint32_t>{0, 1, 2}));
+    // Without the lists: the same counts.
+    const Disagreements counted = bits.disagreements(groups, false);
+    EXPECT_TRUE(counted.where[0].empty() && counted.where[1].empty());
+    EXPECT_EQ(counted.pairs, found.pairs);
+    EXPECT_EQ(counted.anywhere, found.anywhere);
 }
 
 TEST(ShadowBits, OnePassAgreesWithEveryPairTestedAlone) {
