@@ -39,6 +39,17 @@ uniform float u_sample_count;
 #include "common/light_horizon.glsl"
 #endif
 
+// Gap filling's reach (gap_ratio): a neighbour at least this many times farther is not joined
+// (0: any farther one). Bridging a near caster's silhouette to a far caster beside it in the
+// light's view assumes the far one continues behind the near one.
+uniform float u_gap_ratio;
+
+// Whether gap filling joins a micro-occluder at depth ZO to its neighbour at depth ZN, in front
+// of the receiver at PZ.
+bool joins(float zo, float zn, float pz) {
+    return zn > zo && zn < pz && (u_gap_ratio <= 0.0 || zn < zo * u_gap_ratio);
+}
+
 // The light-plane coordinate of the ray from receiver coordinate P (depth PZ) through window
 // coordinate W at distance Z: z (w pz - p) / (pz - z).
 float onLight(float w, float p, float pz, float z) {
@@ -160,10 +171,10 @@ bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Cov
 #if GAP_FILL
                 float zd = y > 0 ? occluderDepth(layer, ivec2(x, y - 1), level) : pz;
                 float zu = y < n - 1 ? occluderDepth(layer, ivec2(x, y + 1), level) : pz;
-                if (zl > zo && zl < pz) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
-                if (zr > zo && zr < pz) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
-                if (zd > zo && zd < pz) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
-                if (zu > zo && zu < pz) l1.y = max(l1.y, onLight(w.w, p.y, p.z, zu));
+                if (joins(zo, zl, pz)) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
+                if (joins(zo, zr, pz)) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
+                if (joins(zo, zd, pz)) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
+                if (joins(zo, zu, pz)) l1.y = max(l1.y, onLight(w.w, p.y, p.z, zu));
 #endif
                 vec2 uv0 = clamp(l0 * scale + 0.5, 0.0, 1.0);
                 vec2 uv1 = clamp(l1 * scale + 0.5, 0.0, 1.0);

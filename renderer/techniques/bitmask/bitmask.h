@@ -36,6 +36,7 @@ inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "a
 inline constexpr IntKey kYsmSize{"ysm_size"};
 inline constexpr IntKey kBits{"bits"};
 inline constexpr BoolKey kGapFill{"gap_fill"};
+inline constexpr FloatKey kGapRatio{"gap_ratio"};
 inline constexpr IntKey kLayers{"layers"};
 inline constexpr IntKey kBudget{"budget"};
 inline constexpr BoolKey kBudgetFalloff{"budget_falloff"};
@@ -66,6 +67,10 @@ inline constexpr std::array kBitmaskParams = {
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jittered or random pattern"),
     boolParam(kGapFill, true, "extend micropatches towards farther neighbours (no light leaks)")
         .define(),
+    floatParam(kGapRatio, 1.5, 0.0, 1000.0,
+               "gap filling reaches only a neighbour less than this many times farther from the "
+               "light (0: any, as the papers; a far one is seldom joined to the near one)")
+        .uniform(),
     intParam(kLayers, 2, 1, 2,
              "depth layers back-projected: 1, the casters' surface the light's centre sees (the "
              "paper); 2, also the nearest surface behind it (depth peeling), which the light's "
