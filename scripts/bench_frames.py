@@ -4,7 +4,8 @@ one process: wall time per frame against the sum of the passes per frame (readba
 it is part of the overhead), their ratio, and the process's time to its first pass (timing
 JSON `process.ms_to_first_pass`), with the EXR writer pipelined (the default) and
 serial (PENUMBRA_SERIAL_WRITES=1), pipelined also with each of --exr-compression's methods
-(render's flag of that name), and the time to first pass with a cold and a warm program
+(render's flag of that name) and with each of --writer-threads' numbers of writer threads (1
+too where the default is more), and the time to first pass with a cold and a warm program
 cache (a private cache folder under the bench's output folder). The `startup` suite: the
 process's start-up alone (shared libraries, `--version`, time to the first pass), beside an
 older binary (--baseline) when given.
@@ -39,6 +40,14 @@ def stretched_walk(out, frames):
     with open(path, "w", encoding="utf-8") as f:
         json.dump(scene, f)
     return path
+
+
+def default_writer_threads():
+    """The writer threads a render uses here (render_job_writer.h): PENUMBRA_WRITER_THREADS,
+    else one for every 4 cores, 1 to 4."""
+    if os.environ.get("PENUMBRA_WRITER_THREADS"):
+        return int(os.environ["PENUMBRA_WRITER_THREADS"])
+    return min(4, max(1, (os.cpu_count() or 1) // 4))
 
 
 def cpu_seconds():
@@ -88,10 +97,18 @@ def frames(b):
     print("(ratio: wall per frame / its own passes; vs serial: / the serial runs' passes, since "
           "on few cores the writer's work slows the passes it overlaps; cpu: the process's CPU "
           "time per frame; MB: EXR size per frame)")
-    print(f"{'run':<26}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
+    print(f"{'run':<30}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
           f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}{'MB':>7}")
     serial_env = {"PENUMBRA_SERIAL_WRITES": "1"}
-    modes = [("serial writes", serial_env, ()), ("pipelined writes", {}, ())]
+    default_writers = default_writer_threads()
+    modes = [("serial writes", serial_env, ()),
+             (f"pipelined writes ({default_writers} writer{'s' * (default_writers > 1)})", {},
+              ())]
+    writers = [int(w) for w in b.args.writer_threads.split(",")] if b.args.writer_threads else (
+        [1] if default_writers > 1 else [])
+    for w in writers:
+        modes.append((f"pipelined, {w} writer{'s' * (w > 1)}",
+                      {"PENUMBRA_WRITER_THREADS": str(w)}, ()))
     for c in b.args.exr_compression.split(",") if b.args.exr_compression else ():
         modes.append((f"pipelined writes {c}", {}, ("--exr-compression", c)))
     rows = {label: [] for label, _, _ in modes}
@@ -106,7 +123,7 @@ def frames(b):
     for label, _, _ in modes:
         per_frame, passes, readback, cpu, first, mb = (statistics.median(c)
                                                        for c in zip(*rows[label]))
-        print(f"{label:<26}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
+        print(f"{label:<30}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
               f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}"
               f"{mb:>7.2f}")
     # Time to first pass: a one-frame render, cold cache (emptied first) and warm, and with the
@@ -118,7 +135,7 @@ def frames(b):
             if empty:
                 shutil.rmtree(cache, ignore_errors=True)
             firsts.append(sequence(b, scene, 1, dict(base, **extra), "first").first)
-        print(f"{label:<26}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
+        print(f"{label:<30}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
               f"{statistics.median(firsts):>16.1f}")
 
 

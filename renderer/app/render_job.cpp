@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <thread>
 #include <utility>
 
 #include "renderer/app/memory_budget.h"
@@ -84,6 +85,7 @@ struct JobFrames {
     nlohmann::json backend;
     std::string scene_name;          // canonical: the same from any folder
     const double& ms_to_first_pass;  // from the process's start; -1 until the first pass
+    output::PixelBuffers& buffers;   // the frames' pixel storage, reused by the writer's work
 };
 
 // The timing report of R: passes in first-run order with one figure per timed run.
@@ -171,10 +173,11 @@ void handOver(const JobFrames& job, FrameWriter& writer, RenderedPlan&& p) {
     p.report.passes.push_back({"readback", "cpu", {p.rendered.readback_ms}});
     auto frame = std::make_shared<RenderedPlan>(std::move(p));
     writer.submit(frame->plan->frame, [&job, frame] {
-        frame::finishImage(frame->rendered);
+        frame::finishImage(frame->rendered, &job.buffers);
         addJobAttributes(frame->rendered.image, job, frame->scene, frame->plan->frame);
         writeFrameFiles(*frame->plan, frame->rendered.image, frame->report,
                         job.req.exr_compression);
+        job.buffers.recycle(std::move(frame->rendered.image));
     });
 }
 
@@ -198,15 +201,18 @@ void countOutcomes(std::vector<WriteOutcome> outcomes, Progress& progress, Tally
 // 3. Per-run GPU resources, then every planned frame; a frame that fails is counted, not fatal.
 // Frame N's readback completes while frame N + 1 renders, and its files are written on the
 // writer's thread while the frames after it render.
-Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::ContextInfo& gl) {
+Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::ContextInfo& gl,
+                   int writers) {
     frame::FrameRenderer renderer(gl, in.first, in.info, in.params);
     gl::PassTimer timer(gl.software);
     const nlohmann::json backend = {{"api", gl.api},         {"device", gl.device},
                                     {"vendor", gl.vendor},   {"renderer", gl.renderer},
                                     {"version", gl.version}, {"clock", timer.clockName()}};
     double ms_to_first_pass = -1;
+    output::PixelBuffers buffers;  // before WRITER: its work uses them
     const JobFrames job{
-        req, in, gl, renderer, timer, backend, canonicalScenePath(req.scene), ms_to_first_pass};
+        req,    in, gl, renderer, timer, backend, canonicalScenePath(req.scene), ms_to_first_pass,
+        buffers};
     const bool progress_on = !req.quiet && isatty(STDERR_FILENO);
     Progress progress(progress_on, in.plans.size());
     timer.on_begin = [&](const std::string& pass) {
@@ -214,7 +220,7 @@ Tally renderFrames(const RenderRequest& req, const JobInput& in, const gl::Conte
         if (progress_on) progress.pass(pass);
     };
     Tally tally;
-    FrameWriter writer(1, FrameWriter::serialRequested());  // before PENDING: outlived by it
+    FrameWriter writer(writers, FrameWriter::serialRequested());  // before PENDING: outlived by it
     std::optional<RenderedPlan> pending;  // rendered, its readback not yet waited for
     auto handOverPending = [&] {
         if (!pending) return;
@@ -259,6 +265,7 @@ int runRenderJob(const RenderRequest& req) {
             if (!p.skip) std::printf("%d\n", p.frame);
         return 0;
     }
+    const int writers = FrameWriter::workersFor(std::thread::hardware_concurrency());
     removeTemporariesOnSignal();  // Ctrl-C leaves no temporary behind, even mid-write
     if (!prepareOutputs(req, in.plans)) return 0;
 
@@ -268,13 +275,14 @@ int runRenderJob(const RenderRequest& req) {
     gl::enableDebugOutput(req.gl.debug);
     gl::setStrictUniforms(req.gl.debug);  // a uniform no shader declares is a bug: fail
     checkGlLimits(in.first, in.info, in.params, glinfo);
-    // A sequence has up to 3 frames in flight: one written, one read back, one rendering.
+    // A sequence has up to 2 + WRITERS frames in flight: one a writer writes, one read back,
+    // one rendering.
     const auto to_render =
         std::count_if(in.plans.begin(), in.plans.end(), [](const FramePlan& p) { return !p.skip; });
     checkMemoryBudget(in.first, in.info, in.params, &glinfo,
-                      static_cast<int>(std::min<long>(to_render, 3)));  // exit 2 before allocating
+                      static_cast<int>(std::min<long>(to_render, 2 + writers)));  // exit 2 first
 
-    const Tally tally = renderFrames(req, in, glinfo);  // 3.
+    const Tally tally = renderFrames(req, in, glinfo, writers);  // 3.
     if (!req.quiet && in.plans.size() > 1)
         std::fprintf(stderr, "penumbra: %zu frames: %d written, %d skipped, %d failed, %.1f s\n",
                      in.plans.size(), tally.written, tally.skipped, tally.failed,

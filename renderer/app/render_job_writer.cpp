@@ -1,26 +1,29 @@
 // The render job's frame writer: see render_job_writer.h.
 #include "renderer/app/render_job_writer.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "renderer/core/error.h"
 
 namespace penumbra::app {
 
-FrameWriter::FrameWriter(int depth, bool serial) : depth_(depth < 1 ? 1 : depth) {
-    if (!serial) worker_ = std::thread([this] { run(); });
+FrameWriter::FrameWriter(int workers, bool serial) : depth_(std::max(workers, 1)) {
+    if (serial) return;
+    for (int i = 0; i < depth_; ++i) workers_.emplace_back([this] { run(); });
 }
 
 FrameWriter::~FrameWriter() {
-    if (!worker_.joinable()) return;
+    if (workers_.empty()) return;
     {
         std::lock_guard lock(mutex_);
         stopping_ = true;
     }
     changed_.notify_all();
-    worker_.join();  // the worker empties the queue first
+    for (auto& w : workers_) w.join();  // the workers empty the queue first
 }
 
 bool FrameWriter::serialRequested() {
@@ -28,11 +31,24 @@ bool FrameWriter::serialRequested() {
     return v && std::strcmp(v, "1") == 0;
 }
 
-void FrameWriter::record(int frame, const std::function<void()>& work) {
-    WriteOutcome outcome{frame, {}};
+int FrameWriter::workersFor(unsigned cores) {
+    if (const char* v = std::getenv("PENUMBRA_WRITER_THREADS")) {
+        const std::string text(v);
+        if (text.size() <= 2 && !text.empty() &&
+            std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+            const int n = std::stoi(text);
+            if (n >= 1 && n <= 16) return n;
+        }
+        throw InputError("PENUMBRA_WRITER_THREADS: '" + text + "' is not a number from 1 to 16");
+    }
+    return std::clamp(static_cast<int>(cores / 4), 1, 4);
+}
+
+void FrameWriter::record(const Task& task) {
+    WriteOutcome outcome{task.frame, {}};
     std::exception_ptr failure;
     try {
-        work();
+        task.work();
     } catch (const RuntimeError& e) {
         outcome.message = e.what();
     } catch (...) {
@@ -40,18 +56,20 @@ void FrameWriter::record(int frame, const std::function<void()>& work) {
         outcome.message = "write failed";
     }
     std::lock_guard lock(mutex_);
-    outcomes_.push_back(std::move(outcome));
+    outcomes_.emplace_back(task.order, std::move(outcome));
     if (failure && !failure_) failure_ = failure;
 }
 
 void FrameWriter::submit(int frame, std::function<void()> work) {
-    if (!worker_.joinable()) {
-        record(frame, work);
+    std::unique_lock lock(mutex_);
+    Task task{frame, submitted_++, std::move(work)};
+    if (workers_.empty()) {
+        lock.unlock();
+        record(task);
         return;
     }
-    std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return unwritten_ < depth_; });
-    queue_.push_back({frame, std::move(work)});
+    queue_.push_back(std::move(task));
     ++unwritten_;
     changed_.notify_all();
 }
@@ -64,7 +82,7 @@ void FrameWriter::run() {
         Task task = std::move(queue_.front());
         queue_.pop_front();
         lock.unlock();
-        record(task.frame, task.work);
+        record(task);
         task.work = nullptr;  // the frame's image is freed before the next is taken
         lock.lock();
         --unwritten_;
@@ -75,7 +93,12 @@ void FrameWriter::run() {
 std::vector<WriteOutcome> FrameWriter::takeOutcomes() {
     std::lock_guard lock(mutex_);
     if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
-    return std::exchange(outcomes_, {});
+    std::sort(outcomes_.begin(), outcomes_.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<WriteOutcome> out;
+    for (auto& o : outcomes_) out.push_back(std::move(o.second));
+    outcomes_.clear();
+    return out;
 }
 
 void FrameWriter::finish() {

@@ -9,6 +9,7 @@
 
 namespace penumbra::frame {
 
+using output::Fill;
 using output::PixelType;
 
 void FrameReadback::wait() {
@@ -62,7 +63,7 @@ void copyRows(const float* src, int w, int h, std::vector<float>& dst) {
 
 // Diagnostic D of every light combined (sum or max) into CH.
 void combineDiagnostic(const FrameReadback& r, size_t d, std::vector<float>& ch) {
-    std::vector<float> layer(ch.size());
+    std::vector<float> layer(r.lights > 1 ? ch.size() : 0);
     for (int l = 0; l < r.lights; ++l) {
         copyRows(r.diagnostic[d][static_cast<size_t>(l)]->as<float>(), r.width, r.height,
                  l == 0 ? ch : layer);
@@ -76,13 +77,14 @@ void combineDiagnostic(const FrameReadback& r, size_t d, std::vector<float>& ch)
 
 }  // namespace
 
-output::Image assembleFrameImage(const FrameReadback& rb) {
+output::Image assembleFrameImage(const FrameReadback& rb, output::PixelBuffers* buffers) {
     if (rb.fence.pending())
         throw RuntimeError("readback: assembled before its copies were waited for");
     const int w = rb.width, h = rb.height;
     output::Image img;
     img.width = w;
     img.height = h;
+    img.buffers = buffers;
     const float* beauty = rb.beauty->as<float>();
     const float* position = rb.position->as<float>();
     const float* normal = rb.normal->as<float>();
@@ -90,19 +92,19 @@ output::Image assembleFrameImage(const FrameReadback& rb) {
     const float* visibility = rb.visibility->as<float>();
     // add() returns references into img.channels: reserve so none moves while they are held.
     img.channels.reserve(13 + rb.diagnostics.size() + rb.light_visibility.size());
-    auto& r = img.add("R", PixelType::Half);
-    auto& g = img.add("G", PixelType::Half);
-    auto& b = img.add("B", PixelType::Half);
-    auto& a = img.add("A", PixelType::Half);
-    auto& z = img.add("Z", PixelType::Float);
-    auto& px = img.add("P.X", PixelType::Float);
-    auto& py = img.add("P.Y", PixelType::Float);
-    auto& pz = img.add("P.Z", PixelType::Float);
-    auto& nx = img.add("N.X", PixelType::Half);
-    auto& ny = img.add("N.Y", PixelType::Half);
-    auto& nz = img.add("N.Z", PixelType::Half);
-    auto& vis = img.add("visibility", PixelType::Float);
-    auto& ids = img.add("id", PixelType::Float);
+    auto& r = img.add("R", PixelType::Half, Fill::Undefined);
+    auto& g = img.add("G", PixelType::Half, Fill::Undefined);
+    auto& b = img.add("B", PixelType::Half, Fill::Undefined);
+    auto& a = img.add("A", PixelType::Half, Fill::Undefined);
+    auto& z = img.add("Z", PixelType::Float, Fill::Undefined);
+    auto& px = img.add("P.X", PixelType::Float, Fill::Undefined);
+    auto& py = img.add("P.Y", PixelType::Float, Fill::Undefined);
+    auto& pz = img.add("P.Z", PixelType::Float, Fill::Undefined);
+    auto& nx = img.add("N.X", PixelType::Half, Fill::Undefined);
+    auto& ny = img.add("N.Y", PixelType::Half, Fill::Undefined);
+    auto& nz = img.add("N.Z", PixelType::Half, Fill::Undefined);
+    auto& vis = img.add("visibility", PixelType::Float, Fill::Undefined);
+    auto& ids = img.add("id", PixelType::Float, Fill::Undefined);
     const size_t width = static_cast<size_t>(w);
     for (int y = 0; y < h; ++y) {
         for (size_t x = 0; x < width; ++x) {
@@ -128,15 +130,17 @@ output::Image assembleFrameImage(const FrameReadback& rb) {
     // Each light's visibility, 1 on the background (Z +inf) as `visibility` is: what a technique
     // left in its layer there (0 or 1, by technique) means nothing, and golden diffs would see it.
     for (size_t l = 0; l < rb.light_visibility.size(); ++l) {
-        auto& light = img.add("visibility." + std::to_string(l), PixelType::Float).pixels;
+        auto& light =
+            img.add("visibility." + std::to_string(l), PixelType::Float, Fill::Undefined).pixels;
         copyRows(rb.light_visibility[l]->as<float>(), w, h, light);
         for (size_t i = 0; i < light.size(); ++i)
             if (z.pixels[i] == std::numeric_limits<float>::infinity()) light[i] = 1.0f;
     }
     for (size_t d = 0; d < rb.diagnostics.size(); ++d)
-        combineDiagnostic(
-            rb, d,
-            img.add(rb.technique_name + "." + rb.diagnostics[d].name, PixelType::Float).pixels);
+        combineDiagnostic(rb, d,
+                          img.add(rb.technique_name + "." + rb.diagnostics[d].name,
+                                  PixelType::Float, Fill::Undefined)
+                              .pixels);
     return img;
 }
 

@@ -41,7 +41,9 @@ FrameReadback startFrameReadback(passes::ReadbackPool& pool, const passes::GBuff
                                  int lights, int scene_lights, const std::string& technique_name,
                                  const std::vector<DiagnosticChannel>& diagnostics);
 
-// The image of a waited-for readback (rows top first), on any thread; no attributes.
-output::Image assembleFrameImage(const FrameReadback& readback);
+// The image of a waited-for readback (rows top first), on any thread; no attributes. Its
+// channels' storage comes from BUFFERS when given (the image's `buffers`).
+output::Image assembleFrameImage(const FrameReadback& readback,
+                                 output::PixelBuffers* buffers = nullptr);
 
 }  // namespace penumbra::frame

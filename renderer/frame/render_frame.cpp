@@ -40,8 +40,8 @@ RenderedFrame renderFrameDeferred(FrameRenderer& renderer, const scene::Scene& s
     return out;
 }
 
-void finishImage(RenderedFrame& r) {
-    output::Image image = assembleFrameImage(r.readback);
+void finishImage(RenderedFrame& r, output::PixelBuffers* buffers) {
+    output::Image image = assembleFrameImage(r.readback, buffers);
     image.attributes = std::move(r.image.attributes);
     r.image = std::move(image);
     r.readback = {};

@@ -52,8 +52,9 @@ RenderedFrame renderFrame(FrameRenderer& renderer, const scene::Scene& s, const 
 // is the caller's to add to readback_ms), and finishImage(R) on any thread, while RENDERER lives.
 RenderedFrame renderFrameDeferred(FrameRenderer& renderer, const scene::Scene& s,
                                   const Params& params, gl::PassTimer& timer, FrameRuns runs);
-// Assembles R's waited-for readback into R.image's channels and frees the readback.
-void finishImage(RenderedFrame& r);
+// Assembles R's waited-for readback into R.image's channels (their storage from BUFFERS when
+// given, which then outlives the image's writing) and frees the readback.
+void finishImage(RenderedFrame& r, output::PixelBuffers* buffers = nullptr);
 
 // The same for a single frame with its own renderer and timer; CONFIGURE (if any) sees the
 // renderer before it renders.

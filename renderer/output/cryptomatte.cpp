@@ -84,22 +84,22 @@ std::string cryptomatteManifest(const std::vector<std::string>& names) {
 
 void addCryptomatte(Image& image, const std::string& layer, const std::vector<std::string>& names,
                     int samples) {
-    const ImageChannel* id = image.find("id");
-    const ImageChannel* alpha = samples > 1 ? image.find("A") : nullptr;
     std::vector<float> ids(names.size());
     for (size_t i = 0; i < names.size(); ++i) ids[i] = cryptomatteId(murmurHash3(names[i]));
     const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
-    std::vector<float> rank(n, 0.0f), coverage(n, 0.0f);
+    image.channels.reserve(image.channels.size() + 4);  // no add() below moves a channel
+    const ImageChannel* id = image.find("id");
+    const ImageChannel* alpha = samples > 1 ? image.find("A") : nullptr;
+    auto& rank = image.add(layer + "00.R", PixelType::Float).pixels;
+    auto& coverage = image.add(layer + "00.G", PixelType::Float).pixels;
+    image.add(layer + "00.B", PixelType::Float);
+    image.add(layer + "00.A", PixelType::Float);
     for (size_t i = 0; id && i < n; ++i) {
         const float v = id->pixels[i];
         if (!(v >= 0.0f) || v >= static_cast<float>(names.size())) continue;  // background
-        rank[i] = ids[static_cast<size_t>(std::lround(v))];
+        rank[i] = ids[static_cast<size_t>(v + 0.5f)];  // an index: no lround call a pixel
         coverage[i] = alpha ? alpha->pixels[i] : 1.0f;
     }
-    image.channels.push_back({layer + "00.R", PixelType::Float, std::move(rank)});
-    image.channels.push_back({layer + "00.G", PixelType::Float, std::move(coverage)});
-    image.channels.push_back({layer + "00.B", PixelType::Float, std::vector<float>(n, 0.0f)});
-    image.channels.push_back({layer + "00.A", PixelType::Float, std::vector<float>(n, 0.0f)});
     const std::string prefix = "cryptomatte/" + hexHash(murmurHash3(layer)).substr(0, 7) + "/";
     image.attributes.emplace_back(prefix + "name", layer);
     image.attributes.emplace_back(prefix + "hash", "MurmurHash3_32");

@@ -21,6 +21,7 @@
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
 #include "renderer/output/exr_threads.h"
+#include "renderer/output/half_bits.h"
 
 namespace penumbra::output {
 
@@ -108,16 +109,20 @@ void writeExrFile(const std::filesystem::path& file, const Image& image,
         header.insert(name, Imf::M44fAttribute(toM44f(value)));
     const Imath::Box2i window = header.dataWindow();
     const size_t width = static_cast<size_t>(image.width);
-    // OpenEXR converts pixel types on input only: half channels need half buffers.
-    std::vector<std::vector<Imath::half>> halves;
+    // OpenEXR converts pixel types on input only: half channels need half buffers (the
+    // sequence's, when the image has some, so that they are reused frame after frame).
+    PixelBuffers own;
+    PixelBuffers& buffers = image.buffers ? *image.buffers : own;
+    std::vector<std::vector<std::uint16_t>> halves;
     halves.reserve(image.channels.size());
     Imf::FrameBuffer frame;
     for (const auto& c : image.channels) {
         if (c.type == PixelType::Half) {
             header.channels().insert(c.name, Imf::Channel(Imf::HALF));
-            const auto& h = halves.emplace_back(c.pixels.begin(), c.pixels.end());
-            frame.insert(c.name, Imf::Slice::Make(Imf::HALF, h.data(), window, sizeof(Imath::half),
-                                                  sizeof(Imath::half) * width));
+            auto& h = halves.emplace_back(buffers.takeHalves(c.pixels.size()));
+            toHalfBits(c.pixels.data(), h.data(), c.pixels.size());
+            frame.insert(c.name, Imf::Slice::Make(Imf::HALF, h.data(), window, sizeof(h[0]),
+                                                  sizeof(h[0]) * width));
         } else {
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
             frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window,
@@ -127,6 +132,7 @@ void writeExrFile(const std::filesystem::path& file, const Image& image,
     Imf::OutputFile out(file.c_str(), header);
     out.setFrameBuffer(frame);
     out.writePixels(image.height);
+    for (auto& h : halves) buffers.give(std::move(h));
 }
 
 }  // namespace

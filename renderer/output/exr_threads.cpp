@@ -12,9 +12,11 @@ namespace penumbra::output {
 void useExrWorkerThreads() {
     static std::once_flag once;
     std::call_once(once, [] {
+        // A thread a core: a sequence's writer threads (render_job_writer.h) share the pool, and
+        // on a GPU host the encoding of their frames is the work there is to spread.
         unsigned n = std::thread::hardware_concurrency();
         if (Imf::globalThreadCount() == 0 && n > 1)
-            Imf::setGlobalThreadCount(static_cast<int>(std::min(n, 8u)));
+            Imf::setGlobalThreadCount(static_cast<int>(std::min(n, 32u)));
     });
 }
 

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/output/pixel_buffers.h"
+
 namespace penumbra::output {
 
 enum class PixelType { Half, Float };
@@ -29,6 +31,9 @@ struct Image {
     std::vector<std::pair<std::string, int>> int_attributes;
     std::vector<std::pair<std::string, float>> float_attributes;
     std::vector<std::pair<std::string, std::array<float, 16>>> matrix_attributes;
+    // Where add() and the EXR writer take their pixel storage from when set (a sequence's
+    // buffers, kept alive by the caller while the image is built and written); else new.
+    PixelBuffers* buffers = nullptr;
 
     const ImageChannel* find(const std::string& name) const {
         for (const auto& c : channels)
@@ -36,9 +41,12 @@ struct Image {
         return nullptr;
     }
     // The reference stays valid until the next add() unless channels was reserved beforehand.
-    ImageChannel& add(std::string name, PixelType type) {
-        channels.push_back(
-            {std::move(name), type, std::vector<float>(static_cast<size_t>(width) * height, 0.0f)});
+    // A channel of width x height pixels: zeros, or (FILL Undefined, with `buffers`) whatever
+    // its reused storage held, for a caller that writes every pixel.
+    ImageChannel& add(std::string name, PixelType type, Fill fill = Fill::Zeros) {
+        const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+        channels.push_back({std::move(name), type,
+                            buffers ? buffers->take(n, fill) : std::vector<float>(n, 0.0f)});
         return channels.back();
     }
 };

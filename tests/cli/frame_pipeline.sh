@@ -1,23 +1,46 @@
-# The frame pipeline of a sequence: files written on the writer thread while the next frames
-# render are the bytes the serial path writes (PENUMBRA_SERIAL_WRITES=1); a sequence stopped by
-# SIGINT or SIGTERM mid-write leaves no temporary and no partial file, one killed by SIGKILL no
-# partial file (its temporaries go with the next run); the program binary cache is hit by a
-# second process, and a corrupt cache file is ignored with the same output; every
-# --exr-compression gives the same pixels.
+# The frame pipeline of a sequence: files written on the writer threads (one, or three) while
+# the next frames render are the bytes the serial path writes (PENUMBRA_SERIAL_WRITES=1); a
+# sequence stopped by SIGINT or SIGTERM mid-write leaves no temporary and no partial file, one
+# killed by SIGKILL no partial file (its temporaries go with the next run); the program binary
+# cache is hit by a second process, and a corrupt cache file is ignored with the same output;
+# every --exr-compression gives the same pixels.
 source "$(dirname "$0")/lib.sh"
 cd "$WORK"
 scene="$DATA/anim6.json"
 
 # 1. Pipelined and serial writes: the same EXR and PNG bytes, every frame.
-"$PENUMBRA" render "$scene" -o "pipe/f.####.exr" --preview "pipe/f.####.png" --quiet
-PENUMBRA_SERIAL_WRITES=1 "$PENUMBRA" render "$scene" -o "serial/f.####.exr" \
-    --preview "serial/f.####.png" --quiet
-for f in 1 2 3 4 5 6; do
-    for ext in exr png; do
-        name=$(printf 'f.%04d.%s' "$f" "$ext")
-        cmp "pipe/$name" "serial/$name" || fail "$name differs between pipelined and serial writes"
+sequence() {  # sequence FOLDER [ENV...]: the six frames of $scene with previews into FOLDER
+    local dir=$1
+    shift
+    env "$@" "$PENUMBRA" render "$scene" -o "$dir/f.####.exr" --preview "$dir/f.####.png" --quiet
+}
+same_frames() {  # same_frames A B WHAT: every frame's EXR and PNG in A are the bytes of B's
+    local f ext name
+    for f in 1 2 3 4 5 6; do
+        for ext in exr png; do
+            name=$(printf 'f.%04d.%s' "$f" "$ext")
+            cmp "$1/$name" "$2/$name" || fail "$name differs between $3"
+        done
     done
+}
+sequence pipe
+sequence serial PENUMBRA_SERIAL_WRITES=1
+same_frames pipe serial "pipelined and serial writes"
+for f in 1 2 3 4 5 6; do
     [ -s "pipe/$(printf 'f.%04d.json' "$f")" ] || fail "frame $f has no timing JSON"
+done
+
+# 1a. Three writer threads (frames written at once, out of order): the same bytes again; frame
+# 4 rendered alone (nothing reused) is the bytes of frame 4 of the sequence, whose pixel storage
+# held frames 1-3 before; a bad PENUMBRA_WRITER_THREADS is refused before anything is written.
+sequence three PENUMBRA_WRITER_THREADS=3
+same_frames three serial "three writers and serial"
+"$PENUMBRA" render "$scene" -f 4 -o "alone/f.####.exr" --quiet
+cmp alone/f.0004.exr pipe/f.0004.exr || fail "frame 4 alone differs from frame 4 of the sequence"
+for bad in 0 17 x; do
+    expect_exit 2 "^penumbra: PENUMBRA_WRITER_THREADS: '$bad' is not a number from 1 to 16" -- \
+        env PENUMBRA_WRITER_THREADS="$bad" "$PENUMBRA" render "$scene" -o "badw/f.####.exr"
+    [ ! -e badw ] || fail "PENUMBRA_WRITER_THREADS=$bad wrote something"
 done
 
 # 1b. --exr-compression: every method is lossless (the default's pixels, to the bit, pipelined
