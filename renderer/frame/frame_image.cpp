@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 
 #include "renderer/core/error.h"
@@ -92,39 +93,53 @@ output::Image assembleFrameImage(const FrameReadback& rb, output::PixelBuffers* 
     const float* visibility = rb.visibility->as<float>();
     // add() returns references into img.channels: reserve so none moves while they are held.
     img.channels.reserve(13 + rb.diagnostics.size() + rb.light_visibility.size());
-    auto& r = img.add("R", PixelType::Half, Fill::Undefined);
-    auto& g = img.add("G", PixelType::Half, Fill::Undefined);
-    auto& b = img.add("B", PixelType::Half, Fill::Undefined);
-    auto& a = img.add("A", PixelType::Half, Fill::Undefined);
-    auto& z = img.add("Z", PixelType::Float, Fill::Undefined);
-    auto& px = img.add("P.X", PixelType::Float, Fill::Undefined);
-    auto& py = img.add("P.Y", PixelType::Float, Fill::Undefined);
-    auto& pz = img.add("P.Z", PixelType::Float, Fill::Undefined);
-    auto& nx = img.add("N.X", PixelType::Half, Fill::Undefined);
-    auto& ny = img.add("N.Y", PixelType::Half, Fill::Undefined);
-    auto& nz = img.add("N.Z", PixelType::Half, Fill::Undefined);
-    auto& vis = img.add("visibility", PixelType::Float, Fill::Undefined);
-    auto& ids = img.add("id", PixelType::Float, Fill::Undefined);
+    // Each channel is a component of a texture read back (STRIDE floats a pixel), but Z (+inf on
+    // the background, where compositors expect it: nothing there, infinitely far) and the id.
+    struct Gathered {
+        const char* name;
+        PixelType type;
+        const float* source;  // null: Z or id
+        size_t stride, component;
+    };
+    const Gathered gathered[] = {
+        {"R", PixelType::Half, beauty, 4, 0},
+        {"G", PixelType::Half, beauty, 4, 1},
+        {"B", PixelType::Half, beauty, 4, 2},
+        {"A", PixelType::Half, beauty, 4, 3},  // coverage: the share of samples on geometry
+        {"Z", PixelType::Float, nullptr, 0, 0},
+        {"P.X", PixelType::Float, position, 4, 0},
+        {"P.Y", PixelType::Float, position, 4, 1},
+        {"P.Z", PixelType::Float, position, 4, 2},
+        {"N.X", PixelType::Half, normal, 4, 0},
+        {"N.Y", PixelType::Half, normal, 4, 1},
+        {"N.Z", PixelType::Half, normal, 4, 2},
+        {"visibility", PixelType::Float, visibility, 1, 0},
+        {"id", PixelType::Float, nullptr, 0, 0},
+    };
+    std::vector<float*> out;
+    for (const Gathered& c : gathered)
+        out.push_back(img.add(c.name, c.type, Fill::Undefined).pixels.data());
+    float* z = out[4];
+    float* ids = out[12];
+    // A row at a time, one channel after the other: the source rows stay in the cache, and no
+    // loop writes 13 streams at once (reused buffers share their page offsets, and 13 streams
+    // of one page offset thrash the cache's sets).
     const size_t width = static_cast<size_t>(w);
     for (int y = 0; y < h; ++y) {
+        const size_t row = static_cast<size_t>(y) * width;          // top first
+        const size_t src = static_cast<size_t>(h - 1 - y) * width;  // GL: bottom first
+        for (size_t k = 0; k < std::size(gathered); ++k) {
+            const Gathered& c = gathered[k];
+            if (!c.source) continue;
+            const float* from = c.source + src * c.stride + c.component;
+            float* to = out[k] + row;
+            for (size_t x = 0; x < width; ++x) to[x] = from[x * c.stride];
+        }
         for (size_t x = 0; x < width; ++x) {
-            const size_t i = static_cast<size_t>(y) * width + x;          // top first
-            const size_t s = static_cast<size_t>(h - 1 - y) * width + x;  // GL: bottom first
-            const bool covered = position[4 * s + 3] != 0.0f;
-            r.pixels[i] = beauty[4 * s + 0];
-            g.pixels[i] = beauty[4 * s + 1];
-            b.pixels[i] = beauty[4 * s + 2];
-            a.pixels[i] = beauty[4 * s + 3];  // coverage: the share of samples on geometry
-            // +inf on the background, where compositors expect it (nothing there, infinitely far).
-            z.pixels[i] = covered ? normal[4 * s + 3] : std::numeric_limits<float>::infinity();
-            px.pixels[i] = position[4 * s + 0];
-            py.pixels[i] = position[4 * s + 1];
-            pz.pixels[i] = position[4 * s + 2];
-            nx.pixels[i] = normal[4 * s + 0];
-            ny.pixels[i] = normal[4 * s + 1];
-            nz.pixels[i] = normal[4 * s + 2];
-            vis.pixels[i] = visibility[s];
-            ids.pixels[i] = static_cast<float>(id[s]);
+            const size_t s = src + x;
+            z[row + x] = position[4 * s + 3] != 0.0f ? normal[4 * s + 3]
+                                                     : std::numeric_limits<float>::infinity();
+            ids[row + x] = static_cast<float>(id[s]);
         }
     }
     // Each light's visibility, 1 on the background (Z +inf) as `visibility` is: what a technique
@@ -134,7 +149,7 @@ output::Image assembleFrameImage(const FrameReadback& rb, output::PixelBuffers* 
             img.add("visibility." + std::to_string(l), PixelType::Float, Fill::Undefined).pixels;
         copyRows(rb.light_visibility[l]->as<float>(), w, h, light);
         for (size_t i = 0; i < light.size(); ++i)
-            if (z.pixels[i] == std::numeric_limits<float>::infinity()) light[i] = 1.0f;
+            if (z[i] == std::numeric_limits<float>::infinity()) light[i] = 1.0f;
     }
     for (size_t d = 0; d < rb.diagnostics.size(); ++d)
         combineDiagnostic(rb, d,
