@@ -4,15 +4,29 @@
 #include <algorithm>
 #include <utility>
 
+#include "renderer/core/parallel_chunks.h"
+
 namespace penumbra::techniques::adaptive {
 
+namespace {
+
+// Chunks of the pixels or active pixels a thread takes at least (parallel_chunks.h).
+constexpr size_t kGrain = 16384;
+
+}  // namespace
+
 void ShadowBits::index() {
+    std::vector<std::vector<std::uint32_t>> found(parallelThreads());
+    const size_t chunks = parallelChunks(pixels, kGrain, [&](size_t c, size_t begin, size_t end) {
+        for (size_t p = begin; p < end; ++p) {
+            std::uint32_t any = 0;
+            for (size_t k = 0; k < size_t(words); ++k) any |= bits[k * pixels + p];
+            if (any) found[c].push_back(std::uint32_t(p));
+        }
+    });
     active.clear();
-    for (size_t p = 0; p < pixels; ++p) {
-        std::uint32_t any = 0;
-        for (size_t k = 0; k < size_t(words); ++k) any |= bits[k * pixels + p];
-        if (any) active.push_back(std::uint32_t(p));
-    }
+    for (size_t c = 0; c < chunks; ++c)
+        active.insert(active.end(), found[c].begin(), found[c].end());
 }
 
 double ShadowBits::anyShadowed(std::span<const int> slots) const {
@@ -33,18 +47,41 @@ std::vector<std::uint32_t> ShadowBits::disagreeing(
 
 Disagreements ShadowBits::disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
                                         bool where) const {
+    size_t pairs = 0;
+    for (const auto& group : groups) pairs += group.size();
+    // Contiguous chunks of the active pixels on threads of their own, each found as below; the
+    // counts add up and the pixel lists join in chunk order (still ascending).
+    std::vector<Disagreements> part(parallelThreads());
+    const size_t chunks = parallelChunks(active.size(), kGrain, [&](size_t c, size_t b, size_t e) {
+        part[c] = disagreementsIn(groups, pairs, where, b, e);
+    });
+    if (chunks == 1) return std::move(part[0]);
+    Disagreements out;
+    out.where.resize(groups.size());
+    out.pairs.assign(pairs, 0);
+    for (size_t c = 0; c < chunks; ++c) {
+        for (size_t g = 0; g < groups.size(); ++g)
+            out.where[g].insert(out.where[g].end(), part[c].where[g].begin(),
+                                part[c].where[g].end());
+        for (size_t q = 0; q < pairs; ++q) out.pairs[q] += part[c].pairs[q];
+        out.anywhere.insert(out.anywhere.end(), part[c].anywhere.begin(), part[c].anywhere.end());
+    }
+    return out;
+}
+
+Disagreements ShadowBits::disagreementsIn(std::span<const std::vector<std::pair<int, int>>> groups,
+                                          size_t pairs, bool where, size_t begin,
+                                          size_t end) const {
     // Blocks of active pixels, their words packed word-major: the loops over a block's pixels
     // below are plain array arithmetic the compiler vectorises, on data that stays in cache.
     constexpr size_t kBlock = 2048;
     Disagreements out;
     out.where.resize(groups.size());
-    size_t pairs = 0;
-    for (const auto& group : groups) pairs += group.size();
     out.pairs.assign(pairs, 0);
     std::vector<std::uint32_t> packed(static_cast<size_t>(words) * kBlock);
     std::vector<std::uint8_t> any(kBlock), anywhere(kBlock);
-    for (size_t first = 0; first < active.size(); first += kBlock) {
-        const size_t n = std::min(kBlock, active.size() - first);
+    for (size_t first = begin; first < end; first += kBlock) {
+        const size_t n = std::min(kBlock, end - first);
         for (size_t k = 0; k < size_t(words); ++k)
             for (size_t j = 0; j < n; ++j)
                 packed[k * kBlock + j] = bits[k * pixels + active[first + j]];

@@ -38,9 +38,14 @@ struct ShadowBits {
     std::vector<std::uint32_t> disagreeing(std::span<const std::pair<int, int>> pairs) const;
     // For each group of pairs of slots, the pixels where any of its pairs disagrees (left
     // empty without WHERE), and each pair's count, in one pass over the active pixels (the
-    // refinement's per-level cost).
+    // refinement's per-level cost), the active pixels split between threads.
     Disagreements disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
                                 bool where = true) const;
+
+private:
+    // The same over active[BEGIN, END), for PAIRS pairs in all.
+    Disagreements disagreementsIn(std::span<const std::vector<std::pair<int, int>>> groups,
+                                  size_t pairs, bool where, size_t begin, size_t end) const;
 };
 
 }  // namespace penumbra::techniques::adaptive

@@ -89,12 +89,13 @@ TEST(ShadowBits, CountsAndDisagreements) {
     EXPECT_EQ(counted.anywhere, found.anywhere);
 }
 
-TEST(ShadowBits, OnePassAgreesWithEveryPairTestedAlone) {
-    // Random bits over 70 slots (3 words), a third of the pixels in every slot's shadow or in
-    // none (the pass skips those); groups of up to three pairs, as a level's cells.
+// Random bits over 70 slots (3 words) of PIXELS pixels, a third of them in every slot's shadow
+// or in none (the pass skips those); groups of up to three pairs, as a level's cells: the one
+// pass finds what each pair tested alone finds.
+void checkOnePassAgainstEveryPair(size_t pixels) {
     std::mt19937 rng(7);
     ShadowBits bits;
-    bits.pixels = 500;
+    bits.pixels = pixels;
     bits.words = 3;
     bits.bits.resize(bits.pixels * 3);
     for (size_t p = 0; p < bits.pixels; ++p)
@@ -134,6 +135,16 @@ TEST(ShadowBits, OnePassAgreesWithEveryPairTestedAlone) {
             EXPECT_EQ(found.pairs[j++], n) << "pair " << a << ", " << b;
         }
     }
+}
+
+TEST(ShadowBits, OnePassAgreesWithEveryPairTestedAlone) {
+    checkOnePassAgainstEveryPair(500);
+}
+
+TEST(ShadowBits, ThreadsSplittingTheActivePixelsFindTheSame) {
+    // 200k pixels (about 133k active): several chunks of the active pixels (parallel_chunks.h),
+    // their counts added and lists joined in order.
+    checkOnePassAgainstEveryPair(200003);
 }
 
 }  // namespace
