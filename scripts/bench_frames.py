@@ -5,7 +5,7 @@ it is part of the overhead), their ratio, and the process's time to its first pa
 JSON `process.ms_to_first_pass`), with the EXR writer pipelined (the default) and
 serial (PENUMBRA_SERIAL_WRITES=1), pipelined also with each of --exr-compression's methods
 (render's flag of that name) and with each of --writer-threads' numbers of writer threads (1
-too where the default is more), and the time to first pass with a cold and a warm program
+too where the default is more), and --baseline's binary pipelined, and the time to first pass with a cold and a warm program
 cache (a private cache folder under the bench's output folder). The `startup` suite: the
 process's start-up alone (shared libraries, `--version`, time to the first pass), beside an
 older binary (--baseline) when given.
@@ -111,10 +111,14 @@ def frames(b):
                       {"PENUMBRA_WRITER_THREADS": str(w)}, ()))
     for c in b.args.exr_compression.split(",") if b.args.exr_compression else ():
         modes.append((f"pipelined writes {c}", {}, ("--exr-compression", c)))
+    binary = {}  # label -> another binary than this build's
+    if b.args.baseline:
+        modes.append(("baseline, pipelined", {}, ()))
+        binary["baseline, pipelined"] = os.path.abspath(b.args.baseline)
     rows = {label: [] for label, _, _ in modes}
     for r in range(b.repeat):  # alternated, so all see the same machine
         for label, extra, options in modes:
-            run = sequence(b, scene, n, dict(base, **extra), "run", options=options)
+            run = sequence(b, scene, n, dict(base, **extra), "run", binary.get(label), options)
             rows[label].append((run.wall * 1e3 / n, statistics.mean(run.passes),
                                 statistics.mean(run.readbacks), run.cpu * 1e3 / n,
                                 run.first if run.first is not None else float("nan"),
