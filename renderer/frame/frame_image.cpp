@@ -119,8 +119,8 @@ output::Image assembleFrameImage(const FrameReadback& rb, output::PixelBuffers* 
     std::vector<float*> out;
     for (const Gathered& c : gathered)
         out.push_back(img.add(c.name, c.type, Fill::Undefined).pixels.data());
-    float* z = out[4];
-    float* ids = out[12];
+    float* z = out[4];     // the table's Z
+    float* ids = out[12];  // and id
     // A row at a time, one channel after the other: the source rows stay in the cache, and no
     // loop writes 13 streams at once (reused buffers share their page offsets, and 13 streams
     // of one page offset thrash the cache's sets).
