@@ -2,6 +2,7 @@
 #include "renderer/app/render_job_writer.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -33,13 +34,12 @@ bool FrameWriter::serialRequested() {
 
 int FrameWriter::workersFor(unsigned cores) {
     if (const char* v = std::getenv("PENUMBRA_WRITER_THREADS")) {
-        const std::string text(v);
-        if (text.size() <= 2 && !text.empty() &&
-            std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-            const int n = std::stoi(text);
-            if (n >= 1 && n <= 16) return n;
-        }
-        throw InputError("PENUMBRA_WRITER_THREADS: '" + text + "' is not a number from 1 to 16");
+        const char* end = v + std::strlen(v);
+        int n = 0;
+        const auto [stop, ec] = std::from_chars(v, end, n);
+        if (ec == std::errc() && stop == end && n >= 1 && n <= 16) return n;
+        throw InputError("PENUMBRA_WRITER_THREADS: '" + std::string(v) +
+                         "' is not a number from 1 to 16");
     }
     return std::clamp(static_cast<int>(cores / 4), 1, 4);
 }
