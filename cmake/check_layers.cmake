@@ -6,8 +6,8 @@ cmake_minimum_required(VERSION 3.25)
 
 # The folders each layer may include besides its own, lowest layer first (DESIGN.md, Layers).
 set(_allowed_core "")
-set(_allowed_scene core)
 set(_allowed_output core)
+set(_allowed_scene core output)  # output/exr.h reads OpenEXR images
 set(_allowed_gl core)
 set(_allowed_passes core scene output gl)
 set(_allowed_frame core scene output gl passes)
@@ -15,7 +15,7 @@ set(_allowed_techniques core scene output gl passes frame)
 set(_allowed_app core scene output gl passes frame techniques)
 set(_allowed_cli core scene output gl passes frame techniques app)
 set(_allowed_oiio core)  # libpenumbra_oiio.so: core/oiio_module.h's interface only
-set(_layers core scene output gl passes frame techniques app cli oiio)
+set(_layers core output scene gl passes frame techniques app cli oiio)
 
 if(NOT SOURCE_DIR)
     message(FATAL_ERROR "check_layers: pass -DSOURCE_DIR=<the source tree>")
@@ -60,7 +60,8 @@ endforeach()
 
 if(_problems)
     message(FATAL_ERROR "check_layers: includes that run back up the layers "
-            "(core < scene, output, gl < passes < frame < techniques < app < cli; core < oiio):\n${_problems}")
+            "(core < output < scene, core < gl; scene, gl < passes < frame < techniques < app "
+            "< cli; core < oiio):\n${_problems}")
 endif()
 message(STATUS "check_layers: ${_count} files include only the layers below them")
 

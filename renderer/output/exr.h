@@ -45,12 +45,20 @@ inline constexpr const char* kExrCompressionChoices =
 void writeExr(const std::filesystem::path& path, const Image& image,
               const ExrCompression& compression = {});
 
+// What readExr decodes: the first CHANNELS channels in reading order (0: every channel), and
+// nothing of an image with a side over MAX_SIDE pixels (0: no limit), refused from its header.
+struct ExrReadLimits {
+    int channels = 0;
+    int max_side = 0;
+};
+
 // Reads every channel (as float; `type` says how it was stored) and the string, int, float
 // and M44f attributes but those every EXR header holds (other types are skipped too).
 // Channels come in the order R, G, B, A, then the others alphabetically (EXR stores channels
 // sorted by name, so the writer's order is not kept). Throws UnreadableImage naming PATH for a
-// missing, unreadable, corrupt or truncated file, or one that is not a flat OpenEXR image.
-Image readExr(const std::filesystem::path& path);
+// missing, unreadable, corrupt or truncated file, one that is not a flat OpenEXR image, or one
+// over LIMITS.max_side ("image too large (WxH, limit N)").
+Image readExr(const std::filesystem::path& path, const ExrReadLimits& limits = {});
 
 // True when readExr(PATH) succeeds: a cached image (a sweep's reference or run) is reused only
 // then, and rendered again when it is missing, truncated or corrupt.

@@ -127,7 +127,7 @@ void readAttributes(const Imf::Header& header, Image& image) {
 
 }  // namespace
 
-Image readExr(const std::filesystem::path& path) {
+Image readExr(const std::filesystem::path& path, const ExrReadLimits& limits) {
     const std::string where = path.string() + ": ";
     checkExrFile(path, where);
     useExrWorkerThreads();
@@ -140,7 +140,13 @@ Image readExr(const std::filesystem::path& path) {
         if (width <= 0 || height <= 0 || width > INT32_MAX || height > INT32_MAX)
             throw UnreadableImage(where + "empty or invalid data window");
 
-        const auto channels = channelList(header, where);
+        if (limits.max_side > 0 && (width > limits.max_side || height > limits.max_side))
+            throw UnreadableImage(where + "image too large (" + std::to_string(width) + "x" +
+                                  std::to_string(height) + ", limit " +
+                                  std::to_string(limits.max_side) + ")");
+        auto channels = channelList(header, where);
+        if (limits.channels > 0 && channels.size() > static_cast<size_t>(limits.channels))
+            channels.resize(static_cast<size_t>(limits.channels));
         const auto nChannels = static_cast<int64_t>(channels.size());
         if (nChannels > 0 && width * height > kMaxSamples / nChannels)
             throw UnreadableImage(where + "image too large (" + std::to_string(width) + "x" +

@@ -1,11 +1,11 @@
-// Image files read with OpenImageIO (the module of core/oiio_module.h): see image_file.h.
+// Image files read with OpenImageIO (the module of core/oiio_module.h), OpenEXR files with
+// output/exr.h's reader: see image_file.h.
 #include "renderer/scene/image_file.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 
 #include <fcntl.h>
@@ -17,6 +17,7 @@
 #include "renderer/core/memory_limit.h"
 #include "renderer/core/oiio_module.h"
 #include "renderer/core/regular_file.h"
+#include "renderer/output/exr.h"
 
 namespace penumbra::scene {
 namespace {
@@ -26,6 +27,17 @@ constexpr int kStripRows = 64;  // rows decoded per read: the most memory a lie 
 std::string oneLine(std::string why) {
     std::replace(why.begin(), why.end(), '\n', ' ');
     return why.empty() ? "" : ": " + quoteText(why);
+}
+
+// Throws "<LABEL>: non-finite pixel at (x, y)" for the first NaN or infinity of IMAGE.
+void requireFinite(const FloatImage& image, const std::string& label) {
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if (!std::isfinite(image.pixels[i])) {
+            const std::size_t pixel = i / static_cast<std::size_t>(image.channels);
+            const auto width = static_cast<std::size_t>(image.width);
+            throw InputError(label + ": non-finite pixel at (" + std::to_string(pixel % width) +
+                             ", " + std::to_string(pixel / width) + ")");
+        }
 }
 
 // Decodes INPUT's first subimage strip by strip into a buffer that grows with what decoded.
@@ -58,13 +70,38 @@ FloatImage readOpened(ImageDecoder& input, const std::string& label, int max_siz
             throw InputError(label + ": cannot read pixels" + oneLine(input.error()));
     }
     input.close();
-    for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        if (!std::isfinite(image.pixels[i])) {
-            const std::size_t pixel = i / static_cast<std::size_t>(image.channels);
-            throw InputError(label + ": non-finite pixel at (" +
-                             std::to_string(pixel % static_cast<std::size_t>(spec.width)) + ", " +
-                             std::to_string(pixel / static_cast<std::size_t>(spec.width)) + ")");
-        }
+    requireFinite(image, label);
+    return image;
+}
+
+// An OpenEXR file through the project's own reader (output/exr.h: header checks, bounded
+// strips, the memory limit), which needs no OpenImageIO module.
+FloatImage readExrFile(const std::filesystem::path& path, const std::string& label, int max_size,
+                       int channels) {
+    output::Image file;
+    try {
+        file = output::readExr(path, {.channels = channels, .max_side = max_size});
+    } catch (const output::UnreadableImage& e) {
+        std::string why = e.what();
+        const std::string prefix = path.string() + ": ";
+        if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
+        throw InputError(label + ": cannot read image: " + why);
+    }
+    if (file.channels.empty()) throw InputError(label + ": cannot read image: no channels");
+    FloatImage image;
+    image.width = file.width;
+    image.height = file.height;
+    image.channels = static_cast<int>(file.channels.size());
+    const auto pixels =
+        static_cast<std::size_t>(file.width) * static_cast<std::size_t>(file.height);
+    const auto stride = static_cast<std::size_t>(image.channels);
+    image.pixels.resize(pixels * stride);
+    for (std::size_t c = 0; c < stride; ++c) {
+        const std::vector<float>& from = file.channels[c].pixels;
+        for (std::size_t i = 0; i < pixels; ++i) image.pixels[i * stride + c] = from[i];
+        std::vector<float>().swap(file.channels[c].pixels);  // held once, not twice
+    }
+    requireFinite(image, label);
     return image;
 }
 
@@ -105,14 +142,7 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
     if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
         throw InputError(label + ": expected " + std::string(expected));
     requireRegularFile(path, label);
-    if (extension == ".exr") {
-        std::ifstream in(path, std::ios::binary);
-        std::error_code error;
-        const std::uintmax_t size = std::filesystem::file_size(path, error);
-        const std::string why = in && !error ? exrHeaderProblem(in, size) : "";
-        if (!why.empty())  // else OpenImageIO says why it cannot open it
-            throw InputError(label + ": cannot read image: " + why);
-    }
+    if (extension == ".exr") return readExrFile(path, label, max_size, channels);
 
     OiioModule& oiio = oiioModule();
     const QuietStderr quiet;

@@ -24,11 +24,20 @@ expect_exit 1 "cannot load the OpenImageIO module .*alone/libpenumbra_oiio.so .*
     alone/penumbra contact-sheet a.0001.exr -o sheet.png --quiet
 [ "$(wc -l <stderr)" -eq 1 ] || fail "more than one line: $(cat stderr)"
 [ ! -e sheet.png ] || fail "a sheet was written without the module"
-# So does a scene whose environment map is an image file.
+# A scene whose environment map is an OpenEXR file renders without it (the project's own EXR
+# reader), the image rendered beside the module; one whose map is a Radiance .hdr needs it.
+env_scene="$PENUMBRA_SOURCE_DIR/scenes/bench/environment.json"
+alone/penumbra render "$env_scene" -t css --size 32x24 -o env.exr --quiet ||
+    fail "an .exr environment without the module"
+"$PENUMBRA" render "$env_scene" -t css --size 32x24 -o env_build.exr --quiet
+"$PENUMBRA" compare env.exr env_build.exr --fail 0 --warn 0 >/dev/null ||
+    fail "the .exr environment renders differently without the module"
+sed -e "s|\"sky_sun.exr\"|\"$PENUMBRA_SOURCE_DIR/tests/data/scene/sky.hdr\"|" \
+    -e "s|\"\\.\\./assets/|\"$PENUMBRA_SOURCE_DIR/scenes/assets/|" "$env_scene" >hdr.json
+grep -q 'sky.hdr' hdr.json || fail "hdr.json names no .hdr"
 expect_exit 1 "cannot load the OpenImageIO module" -- \
-    alone/penumbra render "$PENUMBRA_SOURCE_DIR/scenes/bench/environment.json" -t hard \
-    --size 32x24 -o env.exr --quiet
-[ ! -e env.exr ] || fail "env.exr was written without the module"
+    alone/penumbra render hdr.json -t hard --size 32x24 -o hdr.exr --quiet
+[ ! -e hdr.exr ] || fail "hdr.exr was written without the module"
 
 # 3. A file in its place that is no module, or a library without the module's entry: refused.
 printf 'not a library' >alone/libpenumbra_oiio.so

@@ -71,8 +71,9 @@ void runTarget(const std::string& target, const std::uint8_t* data, std::size_t 
                 writeInput(work / (binary ? "fuzz.glb" : "fuzz.gltf"), data, size));
         });
     } else if (target == "image") {
-        // Every reader a scene's images meet: OIIO from a file (named by its magic), and the
-        // glTF texture decoder (stb_image; Radiance HDR through OIIO from memory).
+        // Every reader a scene's images meet: from a file (named by its magic; .exr through
+        // output/exr.h's reader, the others through OIIO), and the glTF texture decoder
+        // (stb_image; Radiance HDR through OIIO from memory).
         const std::string ext = extensionOf(data, size);
         refusedIsFine([&] {
             (void)scene::readFloatImage(writeInput(work / ("fuzz" + ext), data, size), "fuzz",

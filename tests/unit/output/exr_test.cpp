@@ -239,6 +239,28 @@ TEST(Exr, OverwritesAnExistingFile) {
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"a.exr"});
 }
 
+// Limits: the first channels in reading order only, and a side over the limit refused from
+// the header (the environment and budget maps' checks).
+TEST(Exr, ReadLimitsChannelsAndSize) {
+    ScratchFolder dir;
+    const Image image = makeImage();
+    writeExr(dir / "a.exr", image);
+    const Image rgb = readExr(dir / "a.exr", {.channels = 3});
+    ASSERT_EQ(rgb.channels.size(), 3u);
+    EXPECT_EQ(rgb.channels[0].name, "R");
+    EXPECT_EQ(rgb.channels[2].name, "B");
+    EXPECT_EQ(rgb.channels[1].pixels, pixelsOf(readExr(dir / "a.exr"), "G"));
+    EXPECT_EQ(readExr(dir / "a.exr", {.channels = 0}).channels.size(), image.channels.size());
+    EXPECT_EQ(readExr(dir / "a.exr", {.max_side = 5}).width, 5);
+    try {
+        readExr(dir / "a.exr", {.max_side = 4});
+        FAIL() << "no exception";
+    } catch (const UnreadableImage& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  (dir / "a.exr").string() + ": image too large (5x3, limit 4)");
+    }
+}
+
 TEST(Exr, ReadMissingFileThrowsUnreadable) {
     ScratchFolder dir;
     try {

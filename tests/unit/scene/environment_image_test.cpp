@@ -52,6 +52,21 @@ TEST(EnvironmentImage, GreyIsReplicatedAndNegativesClamped) {
     EXPECT_EQ(loadEnvironmentImage(rgba)->rgb, (std::vector<float>{1, 2, 3}));
 }
 
+// An OpenEXR map is read by the project's own reader: R, G, B whatever the other channels and
+// their order, half channels as float, the data window's pixels.
+TEST(EnvironmentImage, ExrChannelsByNameAndHalf) {
+    const auto path = test::scratchDir() / "named.exr";
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(2, 1, 5, OIIO::TypeDesc::HALF);
+    spec.channelnames = {"Z", "B", "G", "R", "A"};
+    ASSERT_TRUE(out->open(path.string(), spec));
+    const std::vector<float> pixels = {9, 0.5f, 0.25f, 2, 1, 9, 3, 4, 0.125f, 1};
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+    EXPECT_EQ(loadEnvironmentImage(path)->rgb, (std::vector<float>{2, 0.25f, 0.5f, 0.125f, 4, 3}));
+}
+
 TEST(EnvironmentImage, Refusals) {
     const auto nan = writeExr("nan.exr", 2, 1, 3, {1, 1, 1, 1, std::nanf(""), 1});
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(nan); }),
@@ -59,7 +74,7 @@ TEST(EnvironmentImage, Refusals) {
     const auto wide = writeExr("wide.exr", kMaxEnvironmentSize + 1, 1, 1,
                                std::vector<float>(kMaxEnvironmentSize + 1, 1.0f));
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(wide); }),
-                  wide.string() + ": image too large (16385x1, limit 16384)");
+                  wide.string() + ": cannot read image: image too large (16385x1, limit 16384)");
     const auto missing = test::scratchDir() / "missing.hdr";
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(missing); }),
                   missing.string() + ": no such file");
@@ -68,7 +83,7 @@ TEST(EnvironmentImage, Refusals) {
                   png.string() + ": expected an .exr or .hdr file");
     const auto junk = test::writeFile("junk.exr", "not an image at all");
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(junk); }),
-                  junk.string() + ": cannot read image");
+                  junk.string() + ": cannot read image: not an OpenEXR file");
     const auto dir = test::scratchDir() / "folder.exr";
     std::filesystem::create_directories(dir);
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": is a folder");
