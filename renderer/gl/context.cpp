@@ -8,6 +8,7 @@
 #include "renderer/core/error.h"
 #include "renderer/gl/context_egl.h"
 #include "renderer/gl/context_osmesa.h"
+#include "renderer/gl/program_cache.h"
 
 namespace penumbra::gl {
 namespace {
@@ -90,6 +91,7 @@ std::unique_ptr<Context> Context::create(const ContextRequest& request) {
         if (request.backend == Backend::OSMesa || request.backend == Backend::EglSurfaceless)
             throw InputError("--device: only the EGL device backend has devices");
     }
+    createProgramCacheFolder();  // before the driver looks for its own cache beside it
     std::vector<BackendProbe> probes;
     std::unique_ptr<Context> ctx;
     auto attempt = [&](const char* name, auto&& make) {

@@ -82,6 +82,12 @@ std::filesystem::path programCacheFolder() {
     return {};
 }
 
+void createProgramCacheFolder() {
+    const std::filesystem::path folder = programCacheFolder();
+    std::error_code error;
+    if (!folder.empty()) std::filesystem::create_directories(folder, error);
+}
+
 bool loadCachedProgram(GLuint program, const std::string& key) {
     const std::string full = fullKey(key);
     const std::filesystem::path file = fileFor(full);

@@ -24,6 +24,11 @@ ProgramCacheStats programCacheStats();
 // neither XDG_CACHE_HOME nor HOME is an absolute path.
 std::filesystem::path programCacheFolder();
 
+// Creates programCacheFolder() if it is missing (failures ignored), before a driver starts:
+// Mesa keeps its own shader cache in ~/.cache/mesa_shader_cache and, where ~/.cache is
+// missing (a fresh account, a farm node), prints a line on stderr and runs without it.
+void createProgramCacheFolder();
+
 // KEY: everything the binary depends on (the program's stage names and sources; the driver's
 // strings are added here). Loads the cached binary into PROGRAM: true when it links.
 bool loadCachedProgram(GLuint program, const std::string& key);

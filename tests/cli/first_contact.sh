@@ -83,3 +83,12 @@ grep -q 'technique.KEY' penumbra.1 || fail "manpage lacks render's --help"
 bash -n completion.bash || fail "completion is not bash"
 grep -q 'render) flags="[^"]*--strict' completion.bash || fail "completion lacks --strict"
 grep -q 'technique.epsilon=' completion.bash || fail "completion lacks parameters"
+
+# A first render on a fresh account: the cache folder's parents are missing. Nothing on stderr
+# (Mesa prints "Failed to create ... for shader cache" where its folder's parent is missing:
+# the program cache's folder is made before the driver starts), and both caches exist after.
+fresh="$WORK/fresh/deep/cache"
+env -u MESA_SHADER_CACHE_DIR XDG_CACHE_HOME="$fresh" "${r[@]}" -o fresh.exr --quiet 2>fresh.err ||
+    fail "a render with a missing cache folder"
+[ ! -s fresh.err ] || fail "a render with a missing cache folder printed: $(cat fresh.err)"
+[ -d "$fresh/penumbra/programs" ] || fail "the program cache folder was not made"

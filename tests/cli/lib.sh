@@ -10,6 +10,7 @@ trap 'rm -rf "$WORK"' EXIT
 # the user's. Mesa's shader cache and matplotlib's stay where they were (cold, they cost about
 # 1.3 s and 0.6 s a process).
 user_cache=${XDG_CACHE_HOME:-${HOME:-/tmp}/.cache}
+mkdir -p "$user_cache" 2>/dev/null || true  # Mesa makes only the last folder of its cache's path
 export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-$user_cache/mesa_shader_cache}"
 export MPLCONFIGDIR="${MPLCONFIGDIR:-$user_cache/matplotlib}"
 export XDG_CACHE_HOME="$WORK/xdg-cache"
