@@ -376,10 +376,13 @@ def report(root, folders):
     """scripts/sweep-report over the sweep folders: ROOT/report."""
     out = os.path.join(root, "report")
     # matplotlib warns about every crowded parameter plot: its output only where it fails.
-    # This interpreter, not the script's /usr/bin/python3: a GPU machine's matplotlib may be
-    # only in the Python that runs the bench.
-    r = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "sweep-report"), *folders,
-                        "-o", out], capture_output=True, text=True)
+    # This interpreter where it has matplotlib (a GPU machine's may be only in the Python that
+    # runs the bench), else the script's own, Debian's /usr/bin/python3 (scripts/setup installs
+    # python3-matplotlib there; a pyenv python3 first on PATH has none).
+    script = os.path.join(ROOT, "scripts", "sweep-report")
+    has = subprocess.run([sys.executable, "-c", "import matplotlib"], capture_output=True)
+    command = [sys.executable, script] if has.returncode == 0 else [script]
+    r = subprocess.run(command + [*folders, "-o", out], capture_output=True, text=True)
     if r.returncode != 0:
         raise SystemExit(f"bench: pareto: scripts/sweep-report failed: {r.stderr.strip()}")
     print(f"\n{root}/pareto.json, pareto.csv; error against time with every technique's front: "
