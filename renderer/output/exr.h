@@ -17,6 +17,11 @@ class UnreadableImage : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+// Thrown by readExr for an image over its ExrReadLimits::max_side.
+class ImageTooLarge : public UnreadableImage {
+public:
+    using UnreadableImage::UnreadableImage;
+};
 
 // How an EXR is compressed: OpenEXR's lossless methods only (the pixels read back are the ones
 // written, whichever is used). LEVEL is zlib's (1 fastest to 9 smallest) for zip and zips. The
@@ -56,8 +61,8 @@ struct ExrReadLimits {
 // and M44f attributes but those every EXR header holds (other types are skipped too).
 // Channels come in the order R, G, B, A, then the others alphabetically (EXR stores channels
 // sorted by name, so the writer's order is not kept). Throws UnreadableImage naming PATH for a
-// missing, unreadable, corrupt or truncated file, one that is not a flat OpenEXR image, or one
-// over LIMITS.max_side ("image too large (WxH, limit N)").
+// missing, unreadable, corrupt or truncated file, or one that is not a flat OpenEXR image;
+// ImageTooLarge ("image too large (WxH, limit N)") for one over LIMITS.max_side.
 Image readExr(const std::filesystem::path& path, const ExrReadLimits& limits = {});
 
 // True when readExr(PATH) succeeds: a cached image (a sweep's reference or run) is reused only

@@ -141,9 +141,9 @@ Image readExr(const std::filesystem::path& path, const ExrReadLimits& limits) {
             throw UnreadableImage(where + "empty or invalid data window");
 
         if (limits.max_side > 0 && (width > limits.max_side || height > limits.max_side))
-            throw UnreadableImage(where + "image too large (" + std::to_string(width) + "x" +
-                                  std::to_string(height) + ", limit " +
-                                  std::to_string(limits.max_side) + ")");
+            throw ImageTooLarge(where + "image too large (" + std::to_string(width) + "x" +
+                                std::to_string(height) + ", limit " +
+                                std::to_string(limits.max_side) + ")");
         auto channels = channelList(header, where);
         if (limits.channels > 0 && channels.size() > static_cast<size_t>(limits.channels))
             channels.resize(static_cast<size_t>(limits.channels));

@@ -78,14 +78,20 @@ FloatImage readOpened(ImageDecoder& input, const std::string& label, int max_siz
 // strips, the memory limit), which needs no OpenImageIO module.
 FloatImage readExrFile(const std::filesystem::path& path, const std::string& label, int max_size,
                        int channels) {
-    output::Image file;
-    try {
-        file = output::readExr(path, {.channels = channels, .max_side = max_size});
-    } catch (const output::UnreadableImage& e) {
+    // Its messages name PATH: LABEL instead.
+    const auto reason = [&](const std::exception& e) {
         std::string why = e.what();
         const std::string prefix = path.string() + ": ";
         if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
-        throw InputError(label + ": cannot read image: " + why);
+        return why;
+    };
+    output::Image file;
+    try {
+        file = output::readExr(path, {.channels = channels, .max_side = max_size});
+    } catch (const output::ImageTooLarge& e) {
+        throw InputError(label + ": " + reason(e));
+    } catch (const output::UnreadableImage& e) {
+        throw InputError(label + ": cannot read image: " + reason(e));
     }
     if (file.channels.empty()) throw InputError(label + ": cannot read image: no channels");
     FloatImage image;

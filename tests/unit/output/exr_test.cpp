@@ -255,7 +255,7 @@ TEST(Exr, ReadLimitsChannelsAndSize) {
     try {
         readExr(dir / "a.exr", {.max_side = 4});
         FAIL() << "no exception";
-    } catch (const UnreadableImage& e) {
+    } catch (const ImageTooLarge& e) {
         EXPECT_EQ(std::string(e.what()),
                   (dir / "a.exr").string() + ": image too large (5x3, limit 4)");
     }
