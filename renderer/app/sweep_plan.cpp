@@ -17,7 +17,8 @@ namespace {
 constexpr size_t kMaxRuns = 2000;
 
 // Loads and validates RENDER's scene (exit 2 on bad input) and fills its hash and technique.
-// A reference's hash also holds the scene's folder: references are cached across sweeps
+// A render's hash holds the scene document, the frame, the version and the bytes of every asset
+// file read. A reference's also holds the scene's folder: references are cached across sweeps
 // (--cache), and two scenes of one text in two folders may name different asset files.
 void validate(SweepRender& render, const SweepRequest& req, bool reference) {
     scene::LoadOptions options;
@@ -36,6 +37,11 @@ void validate(SweepRender& render, const SweepRequest& req, bool reference) {
                       nullptr);
     std::string key =
         source.document().dump() + "|frame " + std::to_string(req.frame) + "|" + PENUMBRA_VERSION;
+    // The bytes of every asset it read (the scene file itself is in the document): a glTF or
+    // environment edited in place under the same name renders again.
+    const std::vector<std::string> inputs = source.inputFiles();
+    for (std::size_t i = 1; i < inputs.size(); ++i)
+        key += "|input " + inputs[i] + " " + fileContentHash(inputs[i]);
     if (reference) {
         std::error_code ec;
         const auto folder = std::filesystem::weakly_canonical(

@@ -35,7 +35,10 @@ std::shared_ptr<const EnvironmentImage> AssetStore::environment(const std::files
 std::vector<std::string> AssetStore::files() {
     const std::lock_guard lock(mutex_);
     std::vector<std::string> out;
-    for (const auto& [key, file] : gltf_) out.push_back(key);
+    for (const auto& [key, file] : gltf_) {
+        out.push_back(key);
+        out.insert(out.end(), file->external_files.begin(), file->external_files.end());
+    }
     for (const auto& [key, image] : environments_) out.push_back(key);
     return out;
 }

@@ -30,7 +30,8 @@ public:
 
     // The cache key of PATH: canonical when it exists, else lexically normal.
     static std::string pathKey(const std::filesystem::path& path);
-    // The keys of every glTF and environment file loaded so far (what a render reads).
+    // The keys of every glTF (with the buffers and images it read from files) and environment
+    // file loaded so far (what a render reads).
     std::vector<std::string> files();
 
 private:

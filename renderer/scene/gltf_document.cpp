@@ -58,18 +58,28 @@ bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string
 
 // File access for tinygltf: only regular files inside the glTF's folder (no fallback to the
 // working directory), with the same size limit as the glTF itself.
+// What tinygltf's file callbacks see: the glTF's folder, and the files read from it.
+struct FsContext {
+    std::string base_dir;
+    std::vector<std::string>* read = nullptr;
+};
+
 bool fileExists(const std::string& path, void* user) {
-    const auto* base = static_cast<const std::string*>(user);
-    return insideFolder(*base, path) && notRegularFileReason(path).empty();
+    const auto* context = static_cast<const FsContext*>(user);
+    return insideFolder(context->base_dir, path) && notRegularFileReason(path).empty();
 }
 std::string expandFilePath(const std::string& path, void*) {
     return path;
 }
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                   void*) {
+                   void* user) {
     try {
         const std::string bytes = readTextFile(path, path, kMaxGltfFileBytes);
         out->assign(bytes.begin(), bytes.end());
+        auto* context = static_cast<FsContext*>(user);
+        std::error_code ec;
+        const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+        context->read->push_back(ec ? path : canonical.string());
         return true;
     } catch (const InputError& e) {
         if (err) *err = e.what();
@@ -111,12 +121,13 @@ GltfDocument readGltfDocument(const std::filesystem::path& path) {
                          "unsupported extension '" + quoteText(name.get<std::string>()) + "'");
     doc.draco = takeDraco(json);
 
-    std::string base_dir = path.parent_path().string();
-    if (base_dir.empty()) base_dir = ".";
+    FsContext context{path.parent_path().string(), &doc.external_files};
+    if (context.base_dir.empty()) context.base_dir = ".";
+    const std::string& base_dir = context.base_dir;
     const std::vector<std::string> image_uris = confineAssetUris(json, base_dir, doc);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keepImageBytes, nullptr);
-    loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &base_dir});
+    loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &context});
     std::string err;
     std::string warn;
     bool ok = false;

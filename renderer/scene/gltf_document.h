@@ -32,6 +32,8 @@ struct GltfDocument {
     std::vector<GltfPunctualLight> lights;
     std::vector<int> node_camera;  // per node: its camera index, or -1
     std::vector<int> node_light;   // per node: its KHR_lights_punctual light index, or -1
+    // The files read besides the glTF itself (external buffers and images), canonical paths.
+    std::vector<std::string> external_files;
 
     // Throws InputError("<label>: <key>: <what>").
     [[noreturn]] void fail(const std::string& key, const std::string& what) const;

@@ -137,6 +137,7 @@ std::shared_ptr<const GltfFile> loadGltfFile(const std::filesystem::path& path) 
     file->bounds = boundsOf(*file->model);
     file->cameras = doc.cameras;
     file->lights = doc.lights;
+    file->external_files = doc.external_files;
     for (const GltfNodeVisit& visit : visits) {
         const auto n = static_cast<std::size_t>(visit.node);
         if (n < doc.node_camera.size() && doc.node_camera[n] >= 0)

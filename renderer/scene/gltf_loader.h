@@ -37,6 +37,7 @@ struct GltfFile {
     std::vector<GltfPunctualLight> lights;
     std::vector<GltfPlacement> placed_cameras;
     std::vector<GltfPlacement> placed_lights;
+    std::vector<std::string> external_files;  // read besides the glTF (GltfDocument's)
 };
 
 // loadGltf's model with the rest of GltfFile. Throws InputError as loadGltf.

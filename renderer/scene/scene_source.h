@@ -42,7 +42,8 @@ public:
     const std::optional<std::string>& animationFrames() const { return animation_frames_; }
     const std::filesystem::path& path() const { return path_; }
     // The files the scene was read from, as AssetStore::pathKey names them: the scene file, then
-    // every glTF and environment image it loaded (a render must not overwrite any of them).
+    // every glTF (with the buffers and images it read from files) and environment image it
+    // loaded (a render must not overwrite any of them).
     std::vector<std::string> inputFiles() const;
     // The document after overrides, before animation (for output headers and hashing).
     const nlohmann::json& document() const { return document_; }

@@ -49,6 +49,13 @@ cp "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" duck.glb
 expect_exit 2 "^penumbra: --timings: 'duck.glb' is a file the scene reads; " -- \
     "$PENUMBRA" render duck.glb --size 32x24 -o duck.exr --timings duck.glb
 cmp -s duck.glb "$PENUMBRA_SOURCE_DIR/scenes/assets/duck.glb" || fail "the glTF was changed"
+# ... or onto a .gltf's external buffer.
+write_triangle_gltf tri.gltf tri.bin tri.bin
+write_scene_with_gltf tri.json tri.gltf
+cp tri.bin tri.bin.orig
+expect_exit 2 "^penumbra: --timings: 'tri.bin' is a file the scene reads; " -- \
+    "$PENUMBRA" render tri.json -f 1 -o tri.exr --timings tri.bin
+cmp -s tri.bin tri.bin.orig || fail "the glTF's buffer was changed"
 
 # png_budget_map_corrupt: a PNG whose data is damaged printed a libpng line first.
 cp "$S" scene.json
