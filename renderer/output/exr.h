@@ -52,9 +52,12 @@ void writeExr(const std::filesystem::path& path, const Image& image,
 
 // What readExr decodes: the first CHANNELS channels in reading order (0: every channel), and
 // nothing of an image with a side over MAX_SIDE pixels (0: no limit), refused from its header.
+// COLOUR_FIRST: where the file has no R, G or B channel, the first layer that has (its .R, .G,
+// .B, .A: "diffuse.R", ...) comes first instead, else a Y (luminance) channel.
 struct ExrReadLimits {
     int channels = 0;
     int max_side = 0;
+    bool colour_first = false;
 };
 
 // Reads every channel (as float; `type` says how it was stored) and the string, int, float

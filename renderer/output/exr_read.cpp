@@ -68,6 +68,39 @@ void checkExrFile(const std::filesystem::path& path, const std::string& where) {
         throw UnreadableImage(where + why);
 }
 
+// CHANNELS (in reading order) with the colour channels first where there are no plain R, G, B:
+// those of the alphabetically first layer that has any ("diffuse.R", "diffuse.G", ...), in
+// R, G, B, A order, else Y. The others keep their order.
+void colourFirst(std::vector<std::pair<std::string, PixelType>>& channels) {
+    const auto named = [&](const std::string& name) {
+        return std::find_if(channels.begin(), channels.end(),
+                            [&](const auto& c) { return c.first == name; });
+    };
+    if (named("R") != channels.end() || named("G") != channels.end() ||
+        named("B") != channels.end())
+        return;
+    std::string layer;
+    for (const auto& [name, type] : channels) {
+        const size_t dot = name.rfind('.');
+        if (dot == std::string::npos || dot == 0) continue;
+        const std::string suffix = name.substr(dot + 1);
+        if ((suffix == "R" || suffix == "G" || suffix == "B") &&
+            (layer.empty() || name.substr(0, dot) < layer))
+            layer = name.substr(0, dot);
+    }
+    std::vector<std::string> first;
+    if (layer.empty())
+        first = {"Y"};
+    else
+        for (const char* c : {"R", "G", "B", "A"}) first.push_back(layer + "." + c);
+    auto at = channels.begin();
+    for (const std::string& name : first)
+        if (const auto it = named(name); it != channels.end()) {
+            std::rotate(at, it, it + 1);  // moves it to AT, the rest keeping their order
+            ++at;
+        }
+}
+
 // HEADER's channels (none subsampled) with their types, in reading order.
 std::vector<std::pair<std::string, PixelType>> channelList(const Imf::Header& header,
                                                            const std::string& where) {
@@ -145,6 +178,7 @@ Image readExr(const std::filesystem::path& path, const ExrReadLimits& limits) {
                                 std::to_string(height) + ", limit " +
                                 std::to_string(limits.max_side) + ")");
         auto channels = channelList(header, where);
+        if (limits.colour_first) colourFirst(channels);
         if (limits.channels > 0 && channels.size() > static_cast<size_t>(limits.channels))
             channels.resize(static_cast<size_t>(limits.channels));
         const auto nChannels = static_cast<int64_t>(channels.size());

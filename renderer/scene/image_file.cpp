@@ -87,7 +87,8 @@ FloatImage readExrFile(const std::filesystem::path& path, const std::string& lab
     };
     output::Image file;
     try {
-        file = output::readExr(path, {.channels = channels, .max_side = max_size});
+        file = output::readExr(path,
+                               {.channels = channels, .max_side = max_size, .colour_first = true});
     } catch (const output::ImageTooLarge& e) {
         throw InputError(label + ": " + reason(e));
     } catch (const output::UnreadableImage& e) {

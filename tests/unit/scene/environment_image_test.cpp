@@ -52,19 +52,34 @@ TEST(EnvironmentImage, GreyIsReplicatedAndNegativesClamped) {
     EXPECT_EQ(loadEnvironmentImage(rgba)->rgb, (std::vector<float>{1, 2, 3}));
 }
 
-// An OpenEXR map is read by the project's own reader: R, G, B whatever the other channels and
-// their order, half channels as float, the data window's pixels.
-TEST(EnvironmentImage, ExrChannelsByNameAndHalf) {
-    const auto path = test::scratchDir() / "named.exr";
+// A 2x1 half EXR of NAMES, pixel-interleaved PIXELS.
+std::filesystem::path writeNamedExr(const std::string& file, std::vector<std::string> names,
+                                    const std::vector<float>& pixels) {
+    const auto path = test::scratchDir() / file;
     auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(2, 1, 5, OIIO::TypeDesc::HALF);
-    spec.channelnames = {"Z", "B", "G", "R", "A"};
-    ASSERT_TRUE(out->open(path.string(), spec));
-    const std::vector<float> pixels = {9, 0.5f, 0.25f, 2, 1, 9, 3, 4, 0.125f, 1};
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    EXPECT_TRUE(out);
+    OIIO::ImageSpec spec(2, 1, static_cast<int>(names.size()), OIIO::TypeDesc::HALF);
+    spec.channelnames = std::move(names);
+    EXPECT_TRUE(out->open(path.string(), spec));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
     out->close();
-    EXPECT_EQ(loadEnvironmentImage(path)->rgb, (std::vector<float>{2, 0.25f, 0.5f, 0.125f, 4, 3}));
+    return path;
+}
+
+// An OpenEXR map is read by the project's own reader: R, G, B whatever the other channels and
+// their order, half channels as float; with no plain R, G, B, a layer's (diffuse.R, ...), else
+// the luminance Y as grey.
+TEST(EnvironmentImage, ExrChannelsByNameAndHalf) {
+    const auto plain = writeNamedExr("named.exr", {"Z", "B", "G", "R", "A"},
+                                     {9, 0.5f, 0.25f, 2, 1, 9, 3, 4, 0.125f, 1});
+    EXPECT_EQ(loadEnvironmentImage(plain)->rgb, (std::vector<float>{2, 0.25f, 0.5f, 0.125f, 4, 3}));
+    const auto layer =
+        writeNamedExr("layer.exr", {"Z", "specular.R", "diffuse.B", "diffuse.G", "diffuse.R"},
+                      {9, 8, 0.5f, 0.25f, 2, 9, 8, 3, 4, 0.125f});
+    EXPECT_EQ(loadEnvironmentImage(layer)->rgb, (std::vector<float>{2, 0.25f, 0.5f, 0.125f, 4, 3}));
+    const auto luminance = writeNamedExr("ya.exr", {"A", "Y"}, {1, 0.5f, 1, 2});
+    EXPECT_EQ(loadEnvironmentImage(luminance)->rgb,
+              (std::vector<float>{0.5f, 0.5f, 0.5f, 2, 2, 2}));
 }
 
 TEST(EnvironmentImage, Refusals) {
