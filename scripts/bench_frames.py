@@ -92,13 +92,15 @@ def frames(b):
     scene = stretched_walk(b.out, n)
     cache = os.path.join(b.out, "frames_cache")
     base = dict(os.environ, XDG_CACHE_HOME=cache)
+    cores = os.cpu_count() or 1
     print(f"\nframes: {n} frames of `hard` on scenes/walk.json's animation, one process, "
           f"median of {b.repeat} (goal: wall per frame <= 1.3x the sum of the passes)")
     print("(ratio: wall per frame / its own passes; vs serial: / the serial runs' passes, since "
           "on few cores the writer's work slows the passes it overlaps; cpu: the process's CPU "
-          "time per frame; MB: EXR size per frame)")
+          f"time per frame; / floor: wall per frame over that CPU spread on the {cores} cores, "
+          "the least wall it allows; MB: EXR size per frame)")
     print(f"{'run':<30}{'wall/frame ms':>14}{'passes ms':>11}{'ratio':>7}{'vs serial':>11}"
-          f"{'readback ms':>13}{'cpu/frame ms':>14}{'to 1st pass ms':>16}{'MB':>7}")
+          f"{'readback ms':>13}{'cpu/frame ms':>14}{'/ floor':>9}{'to 1st pass ms':>16}{'MB':>7}")
     serial_env = {"PENUMBRA_SERIAL_WRITES": "1"}
     default_writers = default_writer_threads()
     modes = [("serial writes", serial_env, ()),
@@ -128,8 +130,8 @@ def frames(b):
         per_frame, passes, readback, cpu, first, mb = (statistics.median(c)
                                                        for c in zip(*rows[label]))
         print(f"{label:<30}{per_frame:>14.1f}{passes:>11.1f}{per_frame / passes:>7.2f}"
-              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}{first:>16.1f}"
-              f"{mb:>7.2f}")
+              f"{per_frame / serial_passes:>11.2f}{readback:>13.1f}{cpu:>14.1f}"
+              f"{per_frame / (cpu / cores):>9.2f}{first:>16.1f}{mb:>7.2f}")
     # Time to first pass: a one-frame render, cold cache (emptied first) and warm, and with the
     # cache off.
     for label, extra, empty in (("cold program cache", {}, True), ("warm program cache", {}, False),
@@ -139,7 +141,7 @@ def frames(b):
             if empty:
                 shutil.rmtree(cache, ignore_errors=True)
             firsts.append(sequence(b, scene, 1, dict(base, **extra), "first").first)
-        print(f"{label:<30}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}"
+        print(f"{label:<30}{'':>14}{'':>11}{'':>7}{'':>11}{'':>13}{'':>14}{'':>9}"
               f"{statistics.median(firsts):>16.1f}")
 
 

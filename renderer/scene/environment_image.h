@@ -1,5 +1,5 @@
-// Loading an equirectangular environment map (.exr or .hdr) into linear RGB floats with
-// OpenImageIO, size checked before any pixel is read.
+// Loading an equirectangular environment map (.exr through the project's OpenEXR reader, .hdr
+// through OpenImageIO) into linear RGB floats, size checked before any pixel is read.
 #pragma once
 
 #include <filesystem>

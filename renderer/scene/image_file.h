@@ -1,6 +1,6 @@
 // Reading an image file that a scene names (an environment map, a budget map, an HDR glTF
-// texture) with OpenImageIO: type, size and memory checked before any pixel is read, every
-// pixel finite, and no line of OpenImageIO's or libpng's on stderr.
+// texture), OpenEXR with output/exr.h's reader and the rest with OpenImageIO: type, size and
+// memory checked before any pixel is read, every pixel finite, no line of a decoder on stderr.
 #pragma once
 
 #include <cstddef>
@@ -18,7 +18,8 @@ struct FloatImage {
     std::vector<float> pixels;
 };
 
-// Reads the first CHANNELS channels of PATH's first subimage (fewer where it has fewer), as
+// Reads the first CHANNELS channels of PATH's first subimage (fewer where it has fewer; an
+// OpenEXR file's colour channels first, see output::ExrReadLimits::colour_first), as
 // stored (8- and 16-bit files scaled to [0, 1], no colour conversion). Its extension,
 // lower-cased, must be one of EXTENSIONS ("expected " + EXPECTED otherwise); at most MAX_SIZE
 // pixels per side, and the decoded pixels within the memory limit (core/memory_limit.h).
