@@ -2,7 +2,11 @@
 // `css` basis images from a linear-depth shadow map: for order M, layers 0..P-1 hold the CSM
 // basis (cos c_k z, sin c_k z) for two k each, layers P..2P-1 the CSM-Z basis (z cos c_k z,
 // z sin c_k z), layer 2P holds z and the caster coverage (1 where a caster was rasterised)
-// (P = ceil(M / 2), c_k = pi (2k - 1)). Every value is stored
+// (P = ceil(M / 2), c_k = pi (2k - 1)). With MIDDLE the CSM-Z basis is zm cos c_k z, zm sin
+// c_k z, zm the middle of the texel's nearest and farthest caster surfaces, so the blocker
+// search averages depths of a caster's middle (a ball's silhouette) rather than of its side
+// facing the light (the paper's z, which makes the kernel of a round caster too wide). Every
+// value is stored
 // minus its value for an empty texel (z = 1: cos = -1, sin = 0), so the uncovered part of the
 // map and everything outside it is exactly 0: mipmaps use a zero border and summed-area tables
 // grow only with the area that casters cover (FP32 precision).
@@ -11,20 +15,29 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = CSS_UNIT_BASIS_DEPTH) uniform sampler2D u_depth;
+#if MIDDLE
+layout(binding = CSS_UNIT_BASIS_FAR) uniform sampler2D u_far;  // 0 where no caster
+#endif
 layout(rgba32f, binding = CSS_IMAGE_BASIS) uniform writeonly image2DArray u_basis;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, textureSize(u_depth, 0)))) return;
     float z = texelFetch(u_depth, p, 0).r;
+#if MIDDLE
+    float z_far = texelFetch(u_far, p, 0).r;
+    float zm = z < 1.0 && z_far > z ? 0.5 * (z + z_far) : z;
+#else
+    float zm = z;
+#endif
     for (int i = 0; i < CSS_PAIRS; ++i) {
         float c1 = cssCoefficient(2 * i + 1), c2 = cssCoefficient(2 * i + 2);
         vec4 b = vec4(cos(c1 * z) + 1.0, sin(c1 * z), cos(c2 * z) + 1.0, sin(c2 * z));
         if (2 * i + 2 > ORDER) b.zw = vec2(0.0);  // an odd order leaves the last half empty
         imageStore(u_basis, ivec3(p, i), b);
-        // z cos(c z) at z = 1 is -1 as well: the same centring.
-        vec4 bz = vec4(z * cos(c1 * z) + 1.0, z * sin(c1 * z), z * cos(c2 * z) + 1.0,
-                       z * sin(c2 * z));
+        // z cos(c z) at z = 1 is -1 as well: the same centring (zm is 1 there too).
+        vec4 bz = vec4(zm * cos(c1 * z) + 1.0, zm * sin(c1 * z), zm * cos(c2 * z) + 1.0,
+                       zm * sin(c2 * z));
         if (2 * i + 2 > ORDER) bz.zw = vec2(0.0);
         imageStore(u_basis, ivec3(p, CSS_PAIRS + i), bz);
     }

@@ -6,6 +6,7 @@
 
 // basis.comp
 #define CSS_UNIT_BASIS_DEPTH 0
+#define CSS_UNIT_BASIS_FAR 1  // MIDDLE: the farthest caster surfaces (cleared to 0)
 #define CSS_IMAGE_BASIS 0
 // visibility.frag, visibility_coarse.frag, visibility_fine.frag
 #define CSS_UNIT_VISIBILITY_POSITION 0

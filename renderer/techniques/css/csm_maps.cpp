@@ -24,13 +24,15 @@ DepthRange depthRange(const passes::LightWindow& w, int order, float shift) {
     return {w.near - pad, w.far + pad};
 }
 
-CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
+CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, bool middle)
     : map_size_(map_size),
       layers_(basisLayers(order)),
       depth_(map_size, "css shadow map"),
       depth_pass_("css depth", passes::LightDepthPass::Output::Depth),
-      basis_program_(gl::buildProgram("css basis", {"techniques/css/basis.comp"},
-                                      {{"ORDER", std::to_string(order)}})) {
+      basis_program_(
+          gl::buildProgram("css basis", {"techniques/css/basis.comp"},
+                           {{"ORDER", std::to_string(order)}, {"MIDDLE", middle ? "1" : "0"}})) {
+    if (middle) far_ = std::make_unique<passes::LightDepthTarget>(map_size, "css far map");
     const int levels = mipmap ? std::bit_width(static_cast<unsigned>(map_size)) : 1;
     basis_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "css basis images");
     glTextureStorage3D(basis_.id(), levels, GL_RGBA32F, map_size, map_size, layers_);
@@ -53,13 +55,17 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat)
 
 void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
                           const passes::LightWindow& w, const DepthRange& range) {
-    depth_.render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light,
-                  {w.viewProj(light), range.near, 1.0f / (range.far - range.near)}, false);
+    const passes::LightDepthView view{w.viewProj(light), range.near,
+                                      1.0f / (range.far - range.near)};
+    depth_.render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, false);
+    if (far_)
+        far_->render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, true);
 }
 
 void CsmMaps::buildBasis() {
     glUseProgram(basis_program_.id());
     glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_.depth.id());
+    if (far_) glBindTextureUnit(CSS_UNIT_BASIS_FAR, far_->depth.id());
     glBindImageTexture(CSS_IMAGE_BASIS, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
     glDispatchCompute(groups, groups, 1);

@@ -1,6 +1,6 @@
 // The prefiltered maps of `css` for one light: a linear-depth shadow map from the light's
-// centre, its CSM and CSM-Z basis images (glsl/techniques/css/basis.comp) in one RGBA32F array,
-// and their prefiltering by a mip chain or by summed-area tables.
+// centre (and one of the casters' farthest surfaces), its CSM and CSM-Z basis images
+// (glsl/techniques/css/basis.comp) in one RGBA32F array, and their prefiltering.
 #pragma once
 
 #include <memory>
@@ -38,10 +38,12 @@ class CsmMaps {
 public:
     enum class Filter { Mipmap, Sat };
     // Resources for a MAP_SIZE^2 map of order ORDER; SAT and MIPMAP say which prefilters to
-    // prepare (both when a scene mixes square and rectangular lights).
-    CsmMaps(int map_size, int order, bool mipmap, bool sat);
+    // prepare (both when a scene mixes square and rectangular lights). MIDDLE: the CSM-Z basis
+    // weights each texel by the middle of its nearest and farthest caster surface instead of
+    // the nearest (a second, farthest-surface map).
+    CsmMaps(int map_size, int order, bool mipmap, bool sat, bool middle);
 
-    // The caster depth map seen through WINDOW.
+    // The caster depth map seen through WINDOW (and with MIDDLE the farthest surfaces').
     void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
                      const passes::LightWindow& window, const DepthRange& range);
     // The basis images of the depth map (centred on their empty-texel values).
@@ -58,6 +60,7 @@ public:
 private:
     int map_size_, layers_;
     passes::LightDepthTarget depth_;
+    std::unique_ptr<passes::LightDepthTarget> far_;  // with MIDDLE
     gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
     gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;

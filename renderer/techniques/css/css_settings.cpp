@@ -14,6 +14,7 @@ CssSettings cssSettings(const Params& p) {
     s.order = p.get(kOrder);
     s.map_size = p.get(kMapSize);
     s.filter = p.getEnum(kFilter);
+    s.blocker_depth = p.getEnum(kBlockerDepth);
     s.max_aniso = p.get(kMaxAniso);
     s.mip_taps = p.get(kMipTaps);
     s.search_steps = p.get(kSearchSteps);
@@ -55,7 +56,10 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     if (filter != FilterChoice::Mipmap)
         out.push_back({"technique.order", "the summed-area tables",
                        saturatingProduct({m + 1, m + 1, 16, layers}), true});
-    out.push_back({"technique.map_size", "the shadow map", saturatingProduct({m, m, 4})});
+    const bool middle = p.getEnum(kBlockerDepth) == BlockerDepth::Middle;
+    out.push_back({"technique.map_size", middle ? "the shadow maps (nearest and farthest)"
+                                                : "the shadow map",
+                   saturatingProduct({m, m, middle ? 8u : 4u})});
     return out;
 }
 

@@ -17,6 +17,9 @@ namespace penumbra::techniques::css {
 // In the order of the `filter` parameter's choices.
 enum class FilterChoice { Sat, Mipmap, Auto };
 inline constexpr EnumKey<FilterChoice, 3> kFilter{"filter", {"sat", "mipmap", "auto"}};
+// In the order of the `blocker_depth` parameter's choices.
+enum class BlockerDepth { Middle, Nearest };
+inline constexpr EnumKey<BlockerDepth, 2> kBlockerDepth{"blocker_depth", {"middle", "nearest"}};
 
 // ORDER, MAX_ANISO, MIP_TAPS and SEARCH_STEPS are the visibility program's #defines; the
 // environment's rows are environment_lights.h's.
@@ -46,6 +49,10 @@ inline constexpr std::array kCssParams = joinParams(
                  "mipmap taps per side of a square kernel (1 = the paper's single trilinear "
                  "lookup)")
             .define(),
+        enumParam(kBlockerDepth, BlockerDepth::Middle,
+                  "the depth the blocker search averages: per map texel the middle of the "
+                  "nearest and the farthest caster surface (a ball's is its silhouette's), or "
+                  "the nearest (the paper's shadow map)"),
         intParam(kSearchSteps, 2, 0, 4,
                  "blocker searches after the first, each over the cone cut at the last z_avg (0 "
                  "= the paper's one search at the near plane)")
@@ -81,6 +88,7 @@ struct CssSettings {
     int map_size = 256;
     using FilterChoice = css::FilterChoice;
     FilterChoice filter = FilterChoice::Sat;
+    BlockerDepth blocker_depth = BlockerDepth::Middle;
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;
