@@ -20,7 +20,11 @@ constexpr size_t kMaxRuns = 2000;
 // A render's hash holds the scene document, the frame, the version and the bytes of every asset
 // file read. A reference's also holds the scene's folder: references are cached across sweeps
 // (--cache), and two scenes of one text in two folders may name different asset files.
-void validate(SweepRender& render, const SweepRequest& req, bool reference) {
+// Content hashes of asset files by path, read once per plan (every run and reference reads
+// the same assets).
+using FileHashes = std::map<std::string, std::string>;
+
+void validate(SweepRender& render, const SweepRequest& req, bool reference, FileHashes& hashes) {
     scene::LoadOptions options;
     options.technique = render.technique;
     auto source = scene::SceneSource::load(req.scene, render.overrides, options);
@@ -40,8 +44,11 @@ void validate(SweepRender& render, const SweepRequest& req, bool reference) {
     // The bytes of every asset it read (the scene file itself is in the document): a glTF or
     // environment edited in place under the same name renders again.
     const std::vector<std::string> inputs = source.inputFiles();
-    for (std::size_t i = 1; i < inputs.size(); ++i)
-        key += "|input " + inputs[i] + " " + fileContentHash(inputs[i]);
+    for (std::size_t i = 1; i < inputs.size(); ++i) {
+        auto [at, added] = hashes.try_emplace(inputs[i]);
+        if (added) at->second = fileContentHash(inputs[i]);
+        key += "|input " + inputs[i] + " " + at->second;
+    }
     if (reference) {
         std::error_code ec;
         const auto folder = std::filesystem::weakly_canonical(
@@ -63,6 +70,7 @@ SweepPlan planSweep(const SweepRequest& req) {
     SweepPlan plan;
     plan.points = cartesianProduct(req.axes, kMaxRuns);
     std::map<std::string, size_t> reference_of_hash;
+    FileHashes hashes;
     for (const auto& point : plan.points) {
         SweepRender run{req.overrides, req.technique, {}, {}};
         SweepRender ref{{}, req.reference_technique, {}, {}};
@@ -80,8 +88,8 @@ SweepPlan planSweep(const SweepRequest& req) {
         }
         ref.overrides.insert(ref.overrides.end(), req.reference_sets.begin(),
                              req.reference_sets.end());
-        validate(run, req, false);
-        validate(ref, req, true);
+        validate(run, req, false, hashes);
+        validate(ref, req, true, hashes);
         auto [it, inserted] = reference_of_hash.emplace(ref.hash, plan.references.size());
         if (inserted) plan.references.push_back(ref);
         plan.run_reference.push_back(it->second);
