@@ -16,14 +16,15 @@ namespace {
 
 constexpr size_t kMaxRuns = 2000;
 
-// Loads and validates RENDER's scene (exit 2 on bad input) and fills its hash and technique.
-// A render's hash holds the scene document, the frame, the version and the bytes of every asset
-// file read. A reference's also holds the scene's folder: references are cached across sweeps
-// (--cache), and two scenes of one text in two folders may name different asset files.
 // Content hashes of asset files by path, read once per plan (every run and reference reads
 // the same assets).
 using FileHashes = std::map<std::string, std::string>;
 
+// Loads and validates RENDER's scene (exit 2 on bad input) and fills its hash and technique.
+// A render's hash holds the scene document, the frame, the version and the bytes of every asset
+// file read (HASHES keeps them). A reference's also holds the scene's folder: references are
+// cached across sweeps (--cache), and two scenes of one text in two folders may name different
+// asset files.
 void validate(SweepRender& render, const SweepRequest& req, bool reference, FileHashes& hashes) {
     scene::LoadOptions options;
     options.technique = render.technique;

@@ -8,6 +8,7 @@
 #include "renderer/core/json_bounds.h"
 #include "renderer/core/json_field.h"
 #include "renderer/core/regular_file.h"
+#include "renderer/scene/asset_store.h"
 #include "renderer/scene/glb_container.h"
 #include "renderer/scene/gltf_uri.h"
 #include "renderer/scene/json_file.h"
@@ -56,13 +57,15 @@ bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string
     return true;
 }
 
-// File access for tinygltf: only regular files inside the glTF's folder (no fallback to the
-// working directory), with the same size limit as the glTF itself.
 // What tinygltf's file callbacks see: the glTF's folder, and the files read from it.
 struct FsContext {
     std::string base_dir;
     std::vector<std::string>* read = nullptr;
 };
+
+// File access for tinygltf: only regular files inside the glTF's folder (no fallback to the
+// working directory), with the same size limit as the glTF itself; each file read is recorded
+// under AssetStore's key for it.
 
 bool fileExists(const std::string& path, void* user) {
     const auto* context = static_cast<const FsContext*>(user);
@@ -76,10 +79,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     try {
         const std::string bytes = readTextFile(path, path, kMaxGltfFileBytes);
         out->assign(bytes.begin(), bytes.end());
-        auto* context = static_cast<FsContext*>(user);
-        std::error_code ec;
-        const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
-        context->read->push_back(ec ? path : canonical.string());
+        static_cast<FsContext*>(user)->read->push_back(AssetStore::pathKey(path));
         return true;
     } catch (const InputError& e) {
         if (err) *err = e.what();

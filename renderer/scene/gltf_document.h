@@ -32,7 +32,8 @@ struct GltfDocument {
     std::vector<GltfPunctualLight> lights;
     std::vector<int> node_camera;  // per node: its camera index, or -1
     std::vector<int> node_light;   // per node: its KHR_lights_punctual light index, or -1
-    // The files read besides the glTF itself (external buffers and images), canonical paths.
+    // The files read besides the glTF itself (external buffers and images), as
+    // AssetStore::pathKey names them.
     std::vector<std::string> external_files;
 
     // Throws InputError("<label>: <key>: <what>").

@@ -60,7 +60,8 @@ public:
 private:
     int map_size_, layers_;
     passes::LightDepthTarget depth_;
-    std::unique_ptr<passes::LightDepthTarget> far_;  // with MIDDLE
+    std::unique_ptr<passes::LightDepthTarget> far_;  // the farthest surfaces, with MIDDLE
+
     gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
     gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;

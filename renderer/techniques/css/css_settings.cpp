@@ -57,8 +57,8 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
         out.push_back({"technique.order", "the summed-area tables",
                        saturatingProduct({m + 1, m + 1, 16, layers}), true});
     const bool middle = p.getEnum(kBlockerDepth) == BlockerDepth::Middle;
-    out.push_back({"technique.map_size", middle ? "the shadow maps (nearest and farthest)"
-                                                : "the shadow map",
+    out.push_back({"technique.map_size",
+                   middle ? "the shadow maps (nearest and farthest)" : "the shadow map",
                    saturatingProduct({m, m, middle ? 8u : 4u})});
     return out;
 }
