@@ -3,8 +3,8 @@
 //  1. the initial kernel: the cone from the receiver to the light cut by the near plane;
 //  2. z_avg = filter(fbar z) / filter(fbar) from the CSM-Z and CSM basis over that kernel;
 //  3. the final kernel D (d - z_avg) / (d z_avg) (PCSS), and the filtered complementary test
-//     there, with ringing suppression (scale about 1/2, shift, clamp) and contact sharpening
-//     v^p, p = 1 + A exp(-B (d - z_avg)).
+//     there, with ringing suppression (scale about 1/2, shift, clamp; the plateau divided
+//     out) and contact sharpening v^p, p = 1 + A exp(-B (d - z_avg)).
 // A receiver that casts is in the map itself: each kernel tests it nearer the light by the drop
 // of its own tangent plane over part of the kernel (planeDrop), so it is not its own blocker.
 // The entry points: visibility.frag (every pixel), visibility_coarse.frag and
@@ -50,6 +50,7 @@ uniform float u_depth_far;
 uniform float u_map_size;    // N
 uniform float u_ring_scale;  // ringing suppression: s = clamp(scale (F - 1/2) + 1/2, 0, 1)
 uniform float u_ring_shift;  // the test is evaluated at d - shift
+uniform float u_ring_plateau;  // the umbra's plateau correction starts this far in front (0: off)
 uniform float u_sharpen_a;   // contact sharpening v^p, p = 1 + A exp(-B (d - z_avg))
 uniform float u_sharpen_b;
 uniform float u_self_exclude;  // share of a kernel's half-width for the receiver's own plane
@@ -160,6 +161,28 @@ void seriesAt(float ds, out vec4 w[CSS_PAIRS], out float empty) {
         w[i] = cssWeights(i, ds);
         empty -= 2.0 * (w[i].x + w[i].z);
     }
+}
+
+// The truncated series' test of one caster X in front of the test depth (normalised depth):
+// 1/2 + 2 sum_k sin(c_k x) / c_k. Past its ramp it ripples about 1 (Gibbs): with M = 4,
+// 0.946-1.074 for x in [0.1, 0.9] and 0.961 at 1/2, so a plain umbra read 0.04 too light.
+float seriesStep(float x) {
+    float f = 0.5;
+    for (int k = 1; k <= ORDER; ++k) {
+        float ck = cssCoefficient(k);
+        f += 2.0 * sin(ck * x) / ck;
+    }
+    return f;
+}
+
+// The final test F of a kernel whose casters' mean (nearest) depth lies X in front of the test
+// depth, with the series' plateau divided out: F = coverage x seriesStep(x) where the casters
+// lie near one depth (an umbra, a caster's own penumbra), so F / seriesStep(x) is the blocked
+// share. Only past u_ring_plateau (fully from twice it), where the series is on its plateau;
+// nearer, the ramp is the ring shift's and the contact sharpening's.
+float plateauCorrected(float f, float x) {
+    if (u_ring_plateau <= 0.0) return f;
+    return f / mix(1.0, seriesStep(x), smoothstep(u_ring_plateau, 2.0 * u_ring_plateau, x));
 }
 
 // The receiver's own surface in the map (an object that casts): how far its tangent plane
@@ -273,8 +296,12 @@ vec3 cssShadow(Receiver r) {
     // Widened by the ringing scale: the scaled test ramps over 1 / scale of the kernel, so a
     // kernel scale times wider keeps the penumbra's width (exact at a straight shadow edge).
     vec2 w1 = max(u_ring_scale * u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-    if (exclude) seriesAt(TEST_DEPTH(w1), w, empty);
-    float f = filteredTest(makeKernel(c, w1, MIP_TAPS, false), w, empty, false).x;
+    float ds1 = TEST_DEPTH(w1);
+    if (exclude) seriesAt(ds1, w, empty);
+    Kernel k1 = makeKernel(c, w1, MIP_TAPS, false);
+    vec2 z_coverage1 = boxMean(k1, 2 * CSS_PAIRS).xy;  // mean of (z - 1), coverage
+    float f = filteredTestWith(k1, w, empty, false, z_coverage1).x;
+    if (z_coverage1.y > 1e-6) f = plateauCorrected(f, ds1 - 1.0 - z_coverage1.x / z_coverage1.y);
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
     float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
     return vec3(pow(1.0 - s, p), z_avg, max(w1.x, w1.y));

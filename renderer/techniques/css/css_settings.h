@@ -29,6 +29,7 @@ inline constexpr IntKey kMipTaps{"mip_taps"};
 inline constexpr IntKey kSearchSteps{"search_steps"};
 inline constexpr FloatKey kRingScale{"ring_scale"};
 inline constexpr FloatKey kRingShift{"ring_shift"};
+inline constexpr FloatKey kRingPlateau{"ring_plateau"};
 inline constexpr FloatKey kSharpenA{"sharpen_a"};
 inline constexpr FloatKey kSharpenB{"sharpen_b"};
 inline constexpr FloatKey kSelfExclude{"self_exclude"};
@@ -65,6 +66,12 @@ inline constexpr std::array kCssParams = joinParams(
                    "ringing suppression: the test is evaluated this far (normalised depth) nearer "
                    "the light, so a surface does not shadow itself")
             .uniform(),
+        floatParam(kRingPlateau, 0.05, 0.0, 0.25,
+                   "ringing suppression: the final test is divided by the series' value at the "
+                   "kernel's mean caster depth when that lies this far (normalised depth) in "
+                   "front of the test depth, fully from twice as far, so an umbra is black (0 = "
+                   "off, the paper's)")
+            .uniform(),
         floatParam(kSharpenA, 30.0, 0.0, 1000.0,
                    "contact sharpening strength A in v^p, p = 1 + A exp(-B (d - z_avg)); 0 = off")
             .uniform(),
@@ -92,7 +99,7 @@ struct CssSettings {
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;
-    float ring_scale = 1.0f, ring_shift = 0.08f;
+    float ring_scale = 1.0f, ring_shift = 0.08f, ring_plateau = 0.05f;
     float sharpen_a = 30.0f, sharpen_b = 30.0f;
     float self_exclude = 0.25f;
     float interpolate = 0.0f;
