@@ -71,19 +71,26 @@ void countCompiledProgram() {
     ++g_compiled;
 }
 
-std::filesystem::path programCacheFolder() {
-    if (const char* off = std::getenv("PENUMBRA_PROGRAM_CACHE"); off && std::strcmp(off, "0") == 0)
-        return {};
+std::filesystem::path userCacheFolder() {
     // XDG Base Directory: a relative $XDG_CACHE_HOME is ignored.
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')
-        return std::filesystem::path(xdg) / "penumbra" / "programs";
+        return std::filesystem::path(xdg);
     if (const char* home = std::getenv("HOME"); home && *home == '/')
-        return std::filesystem::path(home) / ".cache" / "penumbra" / "programs";
+        return std::filesystem::path(home) / ".cache";
     return {};
 }
 
+std::filesystem::path programCacheFolder() {
+    if (const char* off = std::getenv("PENUMBRA_PROGRAM_CACHE"); off && std::strcmp(off, "0") == 0)
+        return {};
+    const std::filesystem::path user = userCacheFolder();
+    return user.empty() ? user : user / "penumbra" / "programs";
+}
+
 void createProgramCacheFolder() {
-    const std::filesystem::path folder = programCacheFolder();
+    // With the program cache off, the user's cache folder alone: Mesa's cache goes in it.
+    std::filesystem::path folder = programCacheFolder();
+    if (folder.empty()) folder = userCacheFolder();
     std::error_code error;
     if (!folder.empty()) std::filesystem::create_directories(folder, error);
 }

@@ -20,13 +20,18 @@ struct ProgramCacheStats {
 };
 ProgramCacheStats programCacheStats();
 
+// The user's cache folder: $XDG_CACHE_HOME, else ~/.cache; empty when neither is an absolute
+// path.
+std::filesystem::path userCacheFolder();
+
 // The folder cached programs go to; empty when the cache is off (PENUMBRA_PROGRAM_CACHE=0) or
-// neither XDG_CACHE_HOME nor HOME is an absolute path.
+// there is no user cache folder.
 std::filesystem::path programCacheFolder();
 
-// Creates programCacheFolder() if it is missing (failures ignored), before a driver starts:
-// Mesa keeps its own shader cache in ~/.cache/mesa_shader_cache and, where ~/.cache is
-// missing (a fresh account, a farm node), prints a line on stderr and runs without it.
+// Creates programCacheFolder() if it is missing (failures ignored), or with the cache off the
+// user's cache folder, before a driver starts: Mesa keeps its own shader cache in
+// ~/.cache/mesa_shader_cache and, where ~/.cache is missing (a fresh account, a farm node),
+// prints a line on stderr and runs without it.
 void createProgramCacheFolder();
 
 // KEY: everything the binary depends on (the program's stage names and sources; the driver's

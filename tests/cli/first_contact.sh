@@ -92,3 +92,9 @@ env -u MESA_SHADER_CACHE_DIR XDG_CACHE_HOME="$fresh" "${r[@]}" -o fresh.exr --qu
     fail "a render with a missing cache folder"
 [ ! -s fresh.err ] || fail "a render with a missing cache folder printed: $(cat fresh.err)"
 [ -d "$fresh/penumbra/programs" ] || fail "the program cache folder was not made"
+# With the program cache off, the same: the user's cache folder is made for Mesa's, no more.
+off="$WORK/fresh-off/deep/cache"
+env -u MESA_SHADER_CACHE_DIR XDG_CACHE_HOME="$off" PENUMBRA_PROGRAM_CACHE=0 "${r[@]}" \
+    -o fresh-off.exr --quiet 2>fresh-off.err || fail "a render with the program cache off"
+[ ! -s fresh-off.err ] || fail "a render with the program cache off printed: $(cat fresh-off.err)"
+[ ! -e "$off/penumbra" ] || fail "the program cache off still made its folder"
