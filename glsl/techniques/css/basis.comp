@@ -2,12 +2,12 @@
 // `css` basis images from a linear-depth shadow map: for order M, layers 0..P-1 hold the CSM
 // basis (cos c_k z, sin c_k z) for two k each, layers P..2P-1 the CSM-Z basis (z cos c_k z,
 // z sin c_k z), layer 2P holds z and the caster coverage (1 where a caster was rasterised)
-// (P = ceil(M / 2), c_k = pi (2k - 1)). With MIDDLE the CSM-Z basis is zm cos c_k z, zm sin
-// c_k z, zm the middle of the texel's nearest and farthest caster surfaces, so the blocker
-// search averages depths of a caster's middle (a ball's silhouette) rather than of its side
-// facing the light (the paper's z, which makes the kernel of a round caster too wide). Every
-// value is stored
-// minus its value for an empty texel (z = 1: cos = -1, sin = 0), so the uncovered part of the
+// (P = ceil(M / 2), c_k = pi (2k - 1)); with MIDDLE its third channel holds zm - z. With MIDDLE
+// the CSM-Z basis is zm cos c_k z, zm sin c_k z, zm the depth u_middle_at of the way from the
+// texel's nearest to its farthest caster surface, so the blocker search averages depths inside
+// a caster (at 0.5 a ball's silhouette) rather than of its side facing the light (the paper's
+// z, which makes the kernel of a round caster too wide). Every value is stored minus its value
+// for an empty texel (z = 1: cos = -1, sin = 0), so the uncovered part of the
 // map and everything outside it is exactly 0: mipmaps use a zero border and summed-area tables
 // grow only with the area that casters cover (FP32 precision).
 #include "techniques/css/bindings.glsl"
@@ -17,6 +17,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = CSS_UNIT_BASIS_DEPTH) uniform sampler2D u_depth;
 #if MIDDLE
 layout(binding = CSS_UNIT_BASIS_FAR) uniform sampler2D u_far;  // 0 where no caster
+uniform float u_middle_at;
 #endif
 layout(rgba32f, binding = CSS_IMAGE_BASIS) uniform writeonly image2DArray u_basis;
 
@@ -26,7 +27,7 @@ void main() {
     float z = texelFetch(u_depth, p, 0).r;
 #if MIDDLE
     float z_far = texelFetch(u_far, p, 0).r;
-    float zm = z < 1.0 && z_far > z ? 0.5 * (z + z_far) : z;
+    float zm = z < 1.0 && z_far > z ? z + u_middle_at * (z_far - z) : z;
 #else
     float zm = z;
 #endif
@@ -42,5 +43,6 @@ void main() {
         imageStore(u_basis, ivec3(p, CSS_PAIRS + i), bz);
     }
     // z, and whether a caster covers the texel (real depths stay below 1 - m, csm_maps.h).
-    imageStore(u_basis, ivec3(p, 2 * CSS_PAIRS), vec4(z - 1.0, z < 1.0 ? 1.0 : 0.0, 0.0, 0.0));
+    imageStore(u_basis, ivec3(p, 2 * CSS_PAIRS),
+               vec4(z - 1.0, z < 1.0 ? 1.0 : 0.0, zm - z, 0.0));
 }

@@ -131,9 +131,11 @@ vec4 cssWeights(int i, float ds) {
 // sum_i w_i (fbar(d, z_i) - EMPTY) over the kernel; adding EMPTY back for the covered texels
 // only (coverage from the z layer) gives the sum over casters alone. An empty texel never
 // blocks, so it adds exactly 0 instead of the truncated series' ringing, which would swamp a
-// thin caster in a wide kernel. Z_COVERAGE is the kernel's mean of the z layer, when the
-// caller has it already (the first search's early-out).
-vec2 filteredTestWith(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z, vec2 z_coverage) {
+// thin caster in a wide kernel. Z_COVERAGE is the kernel's mean of the z layer ((z - 1),
+// coverage, zm - z), when the caller has it already (the first search's early-out). Returns
+// (fbar, fbar zm, the mean of zm - z over the kernel's casters): with blocker_depth middle the
+// CSM-Z basis weights by zm, and its constant term is 1/2 zm as well.
+vec3 filteredTestWith(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z, vec4 z_coverage) {
     float f = 0.0, fz = 0.0;
     for (int i = 0; i < CSS_PAIRS; ++i) {
         vec4 b = boxMean(k, i);  // cos, sin, cos, sin
@@ -144,12 +146,11 @@ vec2 filteredTestWith(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z, vec
         }
     }
     f += z_coverage.y * empty;
-    fz += 0.5 * z_coverage.x + z_coverage.y * empty;
-    return vec2(f, fz);
+    fz += 0.5 * (z_coverage.x + z_coverage.z) + z_coverage.y * empty;
+    return vec3(f, fz, z_coverage.z / max(z_coverage.y, 1e-6));
 }
-vec2 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
-    return filteredTestWith(k, w, empty, with_z,
-                            boxMean(k, 2 * CSS_PAIRS).xy);  // mean of (z - 1), coverage
+vec3 filteredTest(Kernel k, vec4 w[CSS_PAIRS], float empty, bool with_z) {
+    return filteredTestWith(k, w, empty, with_z, boxMean(k, 2 * CSS_PAIRS));
 }
 
 // The series weights of the shifted receiver depth DS (cssWeights per layer pair) and the test
@@ -271,25 +272,28 @@ vec3 cssShadow(Receiver r) {
     vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
     Kernel k0 = makeKernel(c, w0, SEARCH_TAPS, true);
     // No caster under the search kernel: nothing can block (empty texels add exactly 0).
-    vec2 z_coverage = boxMean(k0, 2 * CSS_PAIRS).xy;
+    vec4 z_coverage = boxMean(k0, 2 * CSS_PAIRS);
     if (z_coverage.y <= 1e-6) return vec3(1.0, 0.0, 0.0);
 
     // The searches share the widest kernel's test depth (its drop is the largest).
     vec4 w[CSS_PAIRS];
     float empty;
     seriesAt(TEST_DEPTH(w0), w, empty);
-    vec2 search = filteredTestWith(k0, w, empty, true, z_coverage);
+    vec3 search = filteredTestWith(k0, w, empty, true, z_coverage);
     if (search.x < 1e-3) return vec3(1.0, 0.0, 0.0);  // no blocker in the search area
     // Stage 2: the average blocker depth; SEARCH_STEPS times more, the search kernel is the
     // cone cut at the plane of the current z_avg instead of the near plane (the paper's
     // suggested iteration, section 3.2), which drops blockers outside the receiver's cone.
-    float z_avg = clamp(search.y / search.x, 0.0, d);
+    // A receiver that casts takes its blockers' nearest surfaces (the kernel's mean zm - z
+    // less): a caster's middle is too deep a blocker for the caster's own far side (a duck's
+    // belly).
+    float z_avg = clamp(search.y / search.x - (r.casts ? search.z : 0.0), 0.0, d);
     float zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     for (int i = 0; i < SEARCH_STEPS; ++i) {
         vec2 ws = max(u_light_size * (zw - zb) / (zw * zb) * texels_per_tan, vec2(1.0));
-        vec2 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS, true), w, empty, true);
+        vec3 refined = filteredTest(makeKernel(c, ws, SEARCH_TAPS, true), w, empty, true);
         if (refined.x < 1e-3) break;  // keep the last estimate
-        z_avg = clamp(refined.y / refined.x, 0.0, d);
+        z_avg = clamp(refined.y / refined.x - (r.casts ? refined.z : 0.0), 0.0, d);
         zb = max(u_depth_near + z_avg * (u_depth_far - u_depth_near), u_near);
     }
     // Stage 3: the final kernel and the filtered test.
@@ -299,7 +303,7 @@ vec3 cssShadow(Receiver r) {
     float ds1 = TEST_DEPTH(w1);
     if (exclude) seriesAt(ds1, w, empty);
     Kernel k1 = makeKernel(c, w1, MIP_TAPS, false);
-    vec2 z_coverage1 = boxMean(k1, 2 * CSS_PAIRS).xy;  // mean of (z - 1), coverage
+    vec4 z_coverage1 = boxMean(k1, 2 * CSS_PAIRS);
     float f = filteredTestWith(k1, w, empty, false, z_coverage1).x;
     if (z_coverage1.y > 1e-6) f = plateauCorrected(f, ds1 - 1.0 - z_coverage1.x / z_coverage1.y);
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);

@@ -24,15 +24,17 @@ DepthRange depthRange(const passes::LightWindow& w, int order, float shift) {
     return {w.near - pad, w.far + pad};
 }
 
-CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, bool middle)
+CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at)
     : map_size_(map_size),
       layers_(basisLayers(order)),
       depth_(map_size, "css shadow map"),
       depth_pass_("css depth", passes::LightDepthPass::Output::Depth),
-      basis_program_(
-          gl::buildProgram("css basis", {"techniques/css/basis.comp"},
-                           {{"ORDER", std::to_string(order)}, {"MIDDLE", middle ? "1" : "0"}})) {
-    if (middle) far_ = std::make_unique<passes::LightDepthTarget>(map_size, "css far map");
+      basis_program_(gl::buildProgram(
+          "css basis", {"techniques/css/basis.comp"},
+          {{"ORDER", std::to_string(order)}, {"MIDDLE", middle_at > 0.0f ? "1" : "0"}})),
+      middle_at_(middle_at) {
+    if (middle_at > 0.0f)
+        far_ = std::make_unique<passes::LightDepthTarget>(map_size, "css far map");
     const int levels = mipmap ? std::bit_width(static_cast<unsigned>(map_size)) : 1;
     basis_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "css basis images");
     glTextureStorage3D(basis_.id(), levels, GL_RGBA32F, map_size, map_size, layers_);
@@ -64,6 +66,7 @@ void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight&
 
 void CsmMaps::buildBasis() {
     glUseProgram(basis_program_.id());
+    if (far_) gl::setUniform(basis_program_, "u_middle_at", middle_at_);
     glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_.depth.id());
     if (far_) glBindTextureUnit(CSS_UNIT_BASIS_FAR, far_->depth.id());
     glBindImageTexture(CSS_IMAGE_BASIS, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);

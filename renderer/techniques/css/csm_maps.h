@@ -38,12 +38,12 @@ class CsmMaps {
 public:
     enum class Filter { Mipmap, Sat };
     // Resources for a MAP_SIZE^2 map of order ORDER; SAT and MIPMAP say which prefilters to
-    // prepare (both when a scene mixes square and rectangular lights). MIDDLE: the CSM-Z basis
-    // weights each texel by the middle of its nearest and farthest caster surface instead of
-    // the nearest (a second, farthest-surface map).
-    CsmMaps(int map_size, int order, bool mipmap, bool sat, bool middle);
+    // prepare (both when a scene mixes square and rectangular lights). MIDDLE_AT > 0: the CSM-Z
+    // basis weights each texel by the depth that far from its nearest (0) to its farthest (1)
+    // caster surface instead of the nearest (a second, farthest-surface map); 0: the nearest.
+    CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at);
 
-    // The caster depth map seen through WINDOW (and with MIDDLE the farthest surfaces').
+    // The caster depth map seen through WINDOW (and with MIDDLE_AT the farthest surfaces').
     void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
                      const passes::LightWindow& window, const DepthRange& range);
     // The basis images of the depth map (centred on their empty-texel values).
@@ -60,13 +60,14 @@ public:
 private:
     int map_size_, layers_;
     passes::LightDepthTarget depth_;
-    std::unique_ptr<passes::LightDepthTarget> far_;  // the farthest surfaces, with MIDDLE
+    std::unique_ptr<passes::LightDepthTarget> far_;  // the farthest surfaces, with middle_at
 
     gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
     gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;
     passes::LightDepthPass depth_pass_;
     gl::Program basis_program_;
+    float middle_at_;
 };
 
 }  // namespace penumbra::techniques::css

@@ -70,9 +70,9 @@ private:
         if (!maps_ || (sat && !has_sat_) || (!sat && !has_mipmap_)) {
             has_sat_ |= sat;
             has_mipmap_ |= !sat;
-            maps_ = std::make_unique<CsmMaps>(settings_.map_size, settings_.order, has_mipmap_,
-                                              has_sat_,
-                                              settings_.blocker_depth == css::BlockerDepth::Middle);
+            maps_ = std::make_unique<CsmMaps>(
+                settings_.map_size, settings_.order, has_mipmap_, has_sat_,
+                settings_.blocker_depth == css::BlockerDepth::Middle ? settings_.middle_at : 0.0f);
         }
         if (!programs.every) {
             // ORDER, MAX_ANISO, MIP_TAPS, SEARCH_STEPS from the table; FILTER_SAT per light.

@@ -15,6 +15,7 @@ CssSettings cssSettings(const Params& p) {
     s.map_size = p.get(kMapSize);
     s.filter = p.getEnum(kFilter);
     s.blocker_depth = p.getEnum(kBlockerDepth);
+    s.middle_at = static_cast<float>(p.get(kMiddleAt));
     s.max_aniso = p.get(kMaxAniso);
     s.mip_taps = p.get(kMipTaps);
     s.search_steps = p.get(kSearchSteps);

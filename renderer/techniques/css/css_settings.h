@@ -29,6 +29,7 @@ inline constexpr IntKey kMipTaps{"mip_taps"};
 inline constexpr IntKey kSearchSteps{"search_steps"};
 inline constexpr FloatKey kRingScale{"ring_scale"};
 inline constexpr FloatKey kRingShift{"ring_shift"};
+inline constexpr FloatKey kMiddleAt{"middle_at"};
 inline constexpr FloatKey kRingPlateau{"ring_plateau"};
 inline constexpr FloatKey kSharpenA{"sharpen_a"};
 inline constexpr FloatKey kSharpenB{"sharpen_b"};
@@ -54,6 +55,10 @@ inline constexpr std::array kCssParams = joinParams(
                   "the depth the blocker search averages: per map texel the middle of the "
                   "nearest and the farthest caster surface (a ball's is its silhouette's), or "
                   "the nearest (the paper's shadow map)"),
+        floatParam(kMiddleAt, 0.35, 0.05, 1.0,
+                   "blocker_depth middle: the depth a texel gives the blocker search, this far "
+                   "from its nearest (0) to its farthest (1) caster surface (0.5: a ball's "
+                   "silhouette)"),
         intParam(kSearchSteps, 2, 0, 4,
                  "blocker searches after the first, each over the cone cut at the last z_avg (0 "
                  "= the paper's one search at the near plane)")
@@ -96,6 +101,7 @@ struct CssSettings {
     using FilterChoice = css::FilterChoice;
     FilterChoice filter = FilterChoice::Sat;
     BlockerDepth blocker_depth = BlockerDepth::Middle;
+    float middle_at = 0.35f;
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;
