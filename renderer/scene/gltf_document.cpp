@@ -66,7 +66,6 @@ struct FsContext {
 // File access for tinygltf: only regular files inside the glTF's folder (no fallback to the
 // working directory), with the same size limit as the glTF itself; each file read is recorded
 // under AssetStore's key for it.
-
 bool fileExists(const std::string& path, void* user) {
     const auto* context = static_cast<const FsContext*>(user);
     return insideFolder(context->base_dir, path) && notRegularFileReason(path).empty();

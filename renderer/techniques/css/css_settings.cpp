@@ -21,7 +21,6 @@ CssSettings cssSettings(const Params& p) {
     s.search_steps = p.get(kSearchSteps);
     s.ring_scale = static_cast<float>(p.get(kRingScale));
     s.ring_shift = static_cast<float>(p.get(kRingShift));
-    s.ring_plateau = static_cast<float>(p.get(kRingPlateau));
     s.sharpen_a = static_cast<float>(p.get(kSharpenA));
     s.sharpen_b = static_cast<float>(p.get(kSharpenB));
     s.self_exclude = static_cast<float>(p.get(kSelfExclude));

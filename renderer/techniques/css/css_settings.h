@@ -52,9 +52,9 @@ inline constexpr std::array kCssParams = joinParams(
                  "lookup)")
             .define(),
         enumParam(kBlockerDepth, BlockerDepth::Middle,
-                  "the depth the blocker search averages: per map texel the middle of the "
-                  "nearest and the farthest caster surface (a ball's is its silhouette's), or "
-                  "the nearest (the paper's shadow map)"),
+                  "the depth the blocker search averages: per map texel a depth between the "
+                  "nearest and the farthest caster surface (middle_at), or the nearest (the "
+                  "paper's shadow map)"),
         floatParam(kMiddleAt, 0.35, 0.05, 1.0,
                    "blocker_depth middle: the depth a texel gives the blocker search, this far "
                    "from its nearest (0) to its farthest (1) caster surface (0.5: a ball's "
@@ -105,7 +105,7 @@ struct CssSettings {
     int max_aniso = 8;
     int mip_taps = 2;
     int search_steps = 2;
-    float ring_scale = 1.0f, ring_shift = 0.08f, ring_plateau = 0.05f;
+    float ring_scale = 1.0f, ring_shift = 0.08f;
     float sharpen_a = 30.0f, sharpen_b = 30.0f;
     float self_exclude = 0.25f;
     float interpolate = 0.0f;
