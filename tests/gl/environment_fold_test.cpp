@@ -65,8 +65,11 @@ TEST(EnvironmentFoldGL, BeautyEqualsEveryLightShadedFromItsOwnLayer) {
         worst, n, sum / std::max(1L, n));
     ASSERT_GT(n, 10000);
     EXPECT_LE(worst, 2e-3);  // half floats: 2^-11 relative, and the sums' rounding
-    // Visibility: the same luminance-weighted shares (one sample a light: B = V where E > 0).
+    // Visibility: the same luminance-weighted shares (one sample a light: B = V where E > 0),
+    // weighted by each light's E, which float gives to about 6e-4 relative for a light near the
+    // horizon (IrradianceGL's worst: its edges' terms cancel), computed in two shaders that the
+    // compiler orders differently: a few pixels move by up to about 1e-4.
     EXPECT_LE(penumbra::testing::maxAbsDifference(channel(folded.image, "visibility"),
                                                   channel(lit.image, "visibility")),
-              1e-4);
+              2e-4);
 }
