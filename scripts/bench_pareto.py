@@ -52,6 +52,8 @@ SWEEPS = [
                                 "technique.layers=1,2"]),
     ("css", "css", {}, ["technique.order=2,4,8", "technique.map_size=256,512",
                         "technique.filter=sat,mipmap", "technique.blocker_depth=middle,nearest"]),
+    # The defaults with every pixel evaluated: what `interpolate` saves, side by side.
+    ("css_every_pixel", "css", {"technique.interpolate": 0}, ["technique.order=4"]),
     # No 512 map: its splat takes about 4x the 256's (47 s a frame at 320x240 on light_size_2,
     # llvmpipe under load) and its error was no lower (light_size_0.25: 0.027 against 0.024).
     ("ssm", "ssm", {}, ["technique.map_size=128,256", "technique.layers=1,4",

@@ -88,7 +88,7 @@ inline constexpr std::array kCssParams = joinParams(
                    "nearer the light along its own tangent plane, so its own surface is not its "
                    "blocker (0 = off, 1 = the whole kernel)")
             .uniform(),
-        floatParam(kInterpolate, 0.0, 0.0, 1.0,
+        floatParam(kInterpolate, 0.05, 0.0, 1.0,
                    "evaluate every other pixel and interpolate a pixel whose samples lie on its "
                    "object and spread by at most this in shadow (0 = evaluate every pixel)")
             .uniform(),
@@ -108,7 +108,7 @@ struct CssSettings {
     float ring_scale = 1.0f, ring_shift = 0.08f;
     float sharpen_a = 30.0f, sharpen_b = 30.0f;
     float self_exclude = 0.25f;
-    float interpolate = 0.0f;
+    float interpolate = 0.05f;
 };
 
 CssSettings cssSettings(const Params& params);
