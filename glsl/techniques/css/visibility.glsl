@@ -242,18 +242,44 @@ vec2 mapTexel(vec3 p) {
     return (u - u_window_lo) * (u_map_size / u_window_size);
 }
 
+// Receiver R in the light's frame (L: offset from the light's centre along right, up and
+// forward), its direction U = L.xy / L.z and its map texel C; false where it is no farther
+// than the nearest caster (nothing can block it).
+bool inLightFrame(Receiver r, out vec3 l, out vec2 u, out vec2 c) {
+    vec3 dl = r.pos - u_light_centre;
+    l = vec3(dot(dl, u_light_right), dot(dl, u_light_up), dot(dl, u_light_forward));
+    u = l.xy / l.z;
+    c = (u - u_window_lo) * (u_map_size / u_window_size);
+    return l.z > u_near;
+}
+
+// Stage 1's search kernel (in texels) of a receiver at distance ZW along the light's axis: the
+// cone to the light where it crosses the near plane.
+vec2 firstSearchSize(float zw) {
+    return max(u_light_size * (zw - u_near) / (zw * u_near) * (u_map_size / u_window_size),
+               vec2(1.0));
+}
+
+// Whether receiver R (whose horizon is above 0) has a caster under its first search kernel:
+// where it has none, cssShadow() returns (1, 0, 0) (visibility_cover.frag marks the others).
+bool hasCasterInSearch(Receiver r) {
+    vec3 l;
+    vec2 u, c;
+    if (!inLightFrame(r, l, u, c)) return false;
+    return boxMean(makeKernel(c, firstSearchSize(l.z), SEARCH_TAPS, true), 2 * CSS_PAIRS).y >
+           1e-6;
+}
+
 // The shadow of receiver R (whose horizon is above 0): (S, z_avg, the final kernel's width in
 // texels along its wider axis), visibility = horizon S; (1, 0, 0) where no blocker is found.
 vec3 cssShadow(Receiver r) {
-    vec3 dl = r.pos - u_light_centre;
-    float zw = dot(dl, u_light_forward);
-    if (zw <= u_near) return vec3(1.0, 0.0, 0.0);                    // nearer than every caster
-    vec3 l = vec3(dot(dl, u_light_right), dot(dl, u_light_up), zw);  // the light's frame
+    vec3 l;
+    vec2 u, c;
+    if (!inLightFrame(r, l, u, c)) return vec3(1.0, 0.0, 0.0);  // nearer than every caster
+    float zw = l.z;
     vec3 nl = vec3(dot(r.normal, u_light_right), dot(r.normal, u_light_up),
                    dot(r.normal, u_light_forward));
     vec2 texels_per_tan = u_map_size / u_window_size;
-    vec2 u = l.xy / zw;
-    vec2 c = (u - u_window_lo) * texels_per_tan;
     float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
     float ds = max(d - u_ring_shift, 0.0);
     // The test depth under a kernel of S texels: ds, less the drop of the receiver's own
@@ -269,7 +295,7 @@ vec3 cssShadow(Receiver r) {
 #define TEST_DEPTH(S) (exclude ? max(ds - planeDrop(l, nl, u, half_tan * (S)), own) : ds)
 
     // Stage 1: the search kernel where the cone to the light crosses the near plane.
-    vec2 w0 = max(u_light_size * (zw - u_near) / (zw * u_near) * texels_per_tan, vec2(1.0));
+    vec2 w0 = firstSearchSize(zw);
     Kernel k0 = makeKernel(c, w0, SEARCH_TAPS, true);
     // No caster under the search kernel: nothing can block (empty texels add exactly 0).
     vec4 z_coverage = boxMean(k0, 2 * CSS_PAIRS);
