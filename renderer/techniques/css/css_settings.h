@@ -90,7 +90,8 @@ inline constexpr std::array kCssParams = joinParams(
             .uniform(),
         floatParam(kInterpolate, 0.05, 0.0, 1.0,
                    "evaluate every other pixel and interpolate a pixel whose samples lie on its "
-                   "object and spread by at most this in shadow (0 = evaluate every pixel)")
+                   "object and spread by at most this in shadow (0 = evaluate every pixel; with "
+                   "SATs only: with mipmaps every pixel is evaluated)")
             .uniform(),
     },
     kFittedEnvironmentParams);
