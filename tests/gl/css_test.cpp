@@ -197,6 +197,35 @@ TEST(CssGL, UmbraIsBlackPastTheSeriesRipple) {
     EXPECT_LE(mae, 0.7 * mae_plain);
 }
 
+// With SATs, the pixels with no caster under their first search kernel are written by the
+// marking draw (visibility_cover.frag) and interpolation is on by default; with mipmaps every
+// pixel is evaluated by the stages (llvmpipe samples a per-pixel level lane by lane), so
+// `interpolate` changes nothing there. Both ways, the floor (which casts nothing, so its
+// horizon share is 1) reads exactly 1 wherever no blocker was found.
+TEST(CssGL, MipmapsEvaluateEveryPixelAndSatsMarkTheLitOnes) {
+    auto mip = renderScene("adaptive_default.json",
+                           {{"technique", css(R"(, "filter": "mipmap", "interpolate": 0)")}});
+    auto mip_interpolated =
+        renderScene("adaptive_default.json",
+                    {{"technique", css(R"(, "filter": "mipmap", "interpolate": 0.5)")}});
+    EXPECT_EQ(penumbra::testing::maxAbsDifference(channel(mip, "visibility"),
+                                                  channel(mip_interpolated, "visibility")),
+              0.0);
+    auto sat = renderScene("adaptive_default.json", {{"technique", css()}});
+    for (const Image* img : {&mip, &sat}) {
+        const auto& v = channel(*img, "visibility");
+        const auto& z = channel(*img, "css.z_avg");
+        const auto& id = channel(*img, "id");
+        long lit = 0;
+        for (size_t i = 0; i < v.size(); ++i) {
+            if (id[i] != 0.0f || z[i] != 0.0f) continue;  // the floor (id 0), no blocker found
+            EXPECT_EQ(v[i], 1.0f) << "pixel " << i;
+            ++lit;
+        }
+        EXPECT_GT(lit, 5000) << "most of the floor is lit";
+    }
+}
+
 TEST(CssGL, RectangularLightThroughSatAndAnisotropicMipmaps) {
     const std::string size = "[1.6,0.5]";
     const Image& ref = truth("closed_form.json", size);
