@@ -132,9 +132,10 @@ private:
         passes::checkFramebuffer(coarse_.fbo, "css coarse samples");
     }
 
-    // Draws COVER, which writes the pixels without a caster under their first search kernel
-    // and leaves the others' stencil 1, then EVALUATE only where it is 1, into the bound
-    // framebuffer, whose stencil attachment the caller set.
+    // Draws COVER, which writes the pixels it can settle (visibility_cover.frag: those without
+    // a caster under their first search kernel; visibility_fine.frag: those it interpolates)
+    // and discards the others, leaving their stencil 1, then EVALUATE only where it is 1, into
+    // the bound framebuffer, whose stencil attachment the caller set.
     void drawCovered(frame::FrameContext& ctx, const gl::Program& cover,
                      const gl::Program& evaluate, const scene::RectLight& light,
                      const passes::LightWindow& w, const css::DepthRange& range,
@@ -187,17 +188,8 @@ private:
         drawCovered(ctx, programs.coarse_cover, programs.coarse, light, w, range, filter);
         glBindFramebuffer(GL_FRAMEBUFFER, output);
         glViewport(0, 0, ctx.gbuffer.width(), ctx.gbuffer.height());
-        const GLint one = 1;
-        glClearBufferiv(GL_STENCIL, 0, &one);
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glBindTextureUnit(CSS_UNIT_VISIBILITY_COARSE, coarse_.texture.id());
-        draw(ctx, programs.fine, light, w, range, filter);
-        glStencilFunc(GL_EQUAL, 1, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        draw(ctx, programs.every, light, w, range, filter);
-        glDisable(GL_STENCIL_TEST);
+        drawCovered(ctx, programs.fine, programs.every, light, w, range, filter);
         glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
     }
 
