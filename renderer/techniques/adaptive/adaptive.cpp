@@ -216,7 +216,10 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
             glEnable(GL_BLEND);
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
-            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags());
+            float weight_sum = 0.0f;  // in the order and precision lit_eval.frag adds them
+            for (int k = 0; k < std::min(n, lit_bits_->capacity()); ++k)
+                weight_sum += views_[size_t(k)].depth.y;
+            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags(), weight_sum);
             glDisable(GL_BLEND);
             glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         });

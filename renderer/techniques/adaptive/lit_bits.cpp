@@ -148,7 +148,7 @@ ShadowBits LitBits::read(int views, int stride) const {
 }
 
 void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                       const gl::Buffer& caster_flags) {
+                       const gl::Buffer& caster_flags, float weight_sum) {
     glUseProgram(eval_program_.id());
     glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
     glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
@@ -156,9 +156,10 @@ void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::R
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, caster_flags.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
-    gl::setUniform(eval_program_, "u_count", std::min(count, 32 * planes_));
+    gl::setUniform(eval_program_, "u_count", std::min(count, capacity()));
     gl::setUniform(eval_program_, "u_width", width_);
     gl::setUniform(eval_program_, "u_pixels", width_ * height_);
+    gl::setUniform(eval_program_, "u_weight_sum", weight_sum);
     passes::setLightFrameUniforms(eval_program_, light);
     glDisable(GL_DEPTH_TEST);
     fullscreen_.draw();

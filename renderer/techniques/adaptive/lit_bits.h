@@ -54,8 +54,12 @@ public:
     ShadowBits read(int views, int stride) const;
     // Adds sum_k w_k lit_k over views 0..COUNT-1 and the beauty sums into colour 0 of the bound
     // framebuffer, as passes::ShadowAccumulate with pcf 1 (the caller sets the blending).
+    // WEIGHT_SUM: sum_k w_k added in view order in float, what a pixel that every view lights
+    // gets (lit_eval.frag).
     void evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                  const gl::Buffer& caster_flags);
+                  const gl::Buffer& caster_flags, float weight_sum);
+    // The views whose bits begin() made room for (evaluate() reads at most these).
+    int capacity() const { return 32 * planes_; }
 
 private:
     gl::Program test_program_;
