@@ -47,8 +47,10 @@ SWEEPS = [
     # The defaults with every pixel tested against the maps: what skip_lit saves, side by side.
     ("adaptive_all_pixels", "adaptive", {"technique.skip_lit": False},
      ["technique.target_error=0.02"]),
-    # The defaults with 512 maps: with skip_lit a map's rendering is most of its cost.
-    ("adaptive_map512", "adaptive", {"technique.map_size": 512}, ["technique.target_error=0.02"]),
+    # The defaults with coarser maps where the casters' window is narrow (max_texel 0.002, 256
+    # to 1024 maps): with skip_lit a map's rendering is most of its cost.
+    ("adaptive_max_texel", "adaptive", {"technique.max_texel": 0.002},
+     ["technique.target_error=0.02"]),
     ("bitmask", "bitmask", {}, ["technique.budget=5,8,12,0",
                                 "technique.occluders=micropatch,microquad,microrect",
                                 "technique.layers=1,2"]),

@@ -32,7 +32,9 @@ Adaptive::Adaptive(const Params& p)
       subdivision_(p.getEnum(kSubdivision)),
       jitter_(p.get(kJitter)),
       seed_(static_cast<unsigned>(p.get(kSeed))),
-      settings_(samplingSettings(p)) {
+      max_texel_(p.get(kMaxTexel)),
+      settings_(samplingSettings(p)),
+      map_size_(settings_.map_size) {
     compare_.gamma = static_cast<float>(p.get(kGamma));
     compare_.relative = p.getEnum(kGammaMode) == GammaMode::Relative;
     const Compare compare = p.getEnum(kCompare);
@@ -80,6 +82,7 @@ void Adaptive::render(frame::FrameContext& ctx) {
                         (subdivision_ == Subdivision::Auto && light.size.y <= 1e-3f * light.size.x);
     adaptive::LightQuadtree tree(max_depth_, linear, jitter_, seed_);
     views_.clear();
+    chooseMapSize(ctx);
     ctx.bindOutput();
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
@@ -166,9 +169,9 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
     region.window = passes::occluderWindow(light, ctx.gpu.casterBoxes());
     if (region.window.empty()) return;  // no caster: the tests find none either
     // The tests' normal offset scales with view 0's texel size; the centre's is nearly the same.
-    const float texel = passes::makeSampleView(light, light.position, ctx.gpu.casterBoxes(), 1.0f,
-                                               settings_.map_size)
-                            .params.y;
+    const float texel =
+        passes::makeSampleView(light, light.position, ctx.gpu.casterBoxes(), 1.0f, map_size_)
+            .params.y;
     ctx.pass("adaptive_lit_region", [&] {
         region_->render(*region_pass_, ctx.gpu, light, region.window.viewProj(light));
         region_->build();
@@ -177,6 +180,20 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
         region.levels = region_->levels();
         lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, region);
     });
+}
+
+void Adaptive::chooseMapSize(const frame::FrameContext& ctx) {
+    const scene::RectLight& light = ctx.currentLight();
+    const int max_size = settings_.map_size;
+    const passes::SampleView centre =
+        passes::makeSampleView(light, light.position, ctx.gpu.casterBoxes(), 1.0f, max_size);
+    // params.y is the window's widest side and its 2-texel margin over the side.
+    const double extent = double(centre.params.y) * max_size * max_size / (max_size + 2.0);
+    map_size_ = mapSideFor(max_size, max_texel_, extent);
+    if (scratch_ && scratch_->mapSize() != map_size_)
+        scratch_ =
+            std::make_unique<passes::ShadowMapBatch>(map_size_, scratch_->layers(), vertex_layer_);
+    if (maps_ && maps_->mapSize() != map_size_) maps_.reset();  // reserveMaps() makes it again
 }
 
 // Adds the light's maps, weighted, into its visibility.
@@ -234,6 +251,7 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     for (const auto& s : tree.samples()) depth_reached = std::max(depth_reached, s.depth);
     auto& st = ctx.stats;
     st["maps_rendered"] = st.value("maps_rendered", 0) + n;
+    st["map_size"] = std::max(st.value("map_size", 0), map_size_);
     st["comparisons"] = st.value("comparisons", 0) + r.comparisons;
     st["queries"] = st.value("queries", 0) + r.queries;
     st["depth_reached"] = std::max(st.value("depth_reached", 0), depth_reached);

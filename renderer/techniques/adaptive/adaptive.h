@@ -19,6 +19,7 @@
 #include "renderer/techniques/adaptive/light_quadtree.h"
 #include "renderer/techniques/adaptive/lit_bits.h"
 #include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/adaptive/map_size.h"
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
@@ -57,6 +58,7 @@ inline constexpr IntKey kCompareStride{"compare_stride"};
 inline constexpr IntKey kMaxDepth{"max_depth"};
 inline constexpr IntKey kMaxMaps{"max_maps"};
 inline constexpr BoolKey kSkipLit{"skip_lit"};
+inline constexpr FloatKey kMaxTexel{"max_texel"};
 
 inline constexpr std::array kAdaptiveParams = {
     enumParam(kMetric, Metric::Error,
@@ -127,6 +129,13 @@ inline constexpr std::array kAdaptiveParams = {
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter pattern"),
     intParam(kPcf, 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
     mapSizeParam(1024),
+    floatParam(kMaxTexel, 0.0, 0.0, 1.0,
+               "0: every map at map_size; else map_size is the largest map, and each light's "
+               "maps are the smallest power of two from 256 whose texel is at most this wide "
+               "per unit distance from the light (the casters' window from the light's centre "
+               "over the side): narrow windows get coarser maps, which cost less but can add "
+               "error at contacts under small lights (0.002: 1.5-2.3x faster on two conformance "
+               "scenes at the same error, see the README)"),
     kNormalOffsetParam,
     kDepthBiasParam,
 };
@@ -244,6 +253,9 @@ private:
     // shadow bits.
     void renderAndTest(frame::FrameContext& ctx, int first, int n);
 
+    // Chooses map_size_ for the current light (max_texel) and sizes the map batches to it.
+    void chooseMapSize(const frame::FrameContext& ctx);
+
     // Grows maps_ to at least N layers, keeping its first FILLED maps.
     void reserveMaps(int filled, int n);
 
@@ -275,7 +287,9 @@ private:
     Subdivision subdivision_;
     bool jitter_;
     unsigned seed_;
-    SamplingSettings settings_;
+    double max_texel_;
+    SamplingSettings settings_;  // settings_.map_size: the largest map
+    int map_size_ = 0;           // the current light's maps' side (chooseMapSize)
     CompareSettings compare_;
     std::unique_ptr<passes::ShadowMapBatch> maps_, scratch_;
     std::unique_ptr<passes::ShadowAccumulate> accumulate_;

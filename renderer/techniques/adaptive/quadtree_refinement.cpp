@@ -101,8 +101,7 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
         const glm::vec2 uv = tree.samples()[i].uv;
         glm::vec3 p =
             corners[0] + (corners[1] - corners[0]) * uv.x + (corners[3] - corners[0]) * uv.y;
-        views_.push_back(
-            passes::makeSampleView(light, p, ctx.gpu.casterBoxes(), 1.0f, settings_.map_size));
+        views_.push_back(passes::makeSampleView(light, p, ctx.gpu.casterBoxes(), 1.0f, map_size_));
     }
     const int n = static_cast<int>(views_.size());
     if (first == n) return;
@@ -156,20 +155,18 @@ void Adaptive::renderAndTest(frame::FrameContext& ctx, int first, int n) {
 void Adaptive::reserveMaps(int filled, int n) {
     if (maps_ && maps_->layers() >= n) return;
     const int layers = std::min(max_maps_, std::max({n, maps_ ? 2 * maps_->layers() : 0, 25}));
-    auto grown =
-        std::make_unique<passes::ShadowMapBatch>(settings_.map_size, layers, vertex_layer_);
+    auto grown = std::make_unique<passes::ShadowMapBatch>(map_size_, layers, vertex_layer_);
     if (maps_ && filled > 0)
         glCopyImageSubData(maps_->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0,
-                           grown->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, settings_.map_size,
-                           settings_.map_size, filled);
+                           grown->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, map_size_,
+                           map_size_, filled);
     maps_ = std::move(grown);
 }
 
 // Copies scratch layers 0..COUNT-1 to maps_ layers BASE.. (layer = view index there).
 void Adaptive::copyToMaps(int base, int count) {
     glCopyImageSubData(scratch_->depth().id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, maps_->depth().id(),
-                       GL_TEXTURE_2D_ARRAY, 0, 0, 0, base, settings_.map_size, settings_.map_size,
-                       count);
+                       GL_TEXTURE_2D_ARRAY, 0, 0, 0, base, map_size_, map_size_, count);
 }
 
 }  // namespace penumbra::techniques::adaptive
