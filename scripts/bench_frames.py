@@ -44,10 +44,10 @@ def stretched_walk(out, frames):
 
 def default_writer_threads():
     """The writer threads a render uses here (render_job_writer.h): PENUMBRA_WRITER_THREADS,
-    else one for every 4 cores, 1 to 4."""
+    else one for every 4 cores, 2 to 4."""
     if os.environ.get("PENUMBRA_WRITER_THREADS"):
         return int(os.environ["PENUMBRA_WRITER_THREADS"])
-    return min(4, max(1, (os.cpu_count() or 1) // 4))
+    return min(4, max(2, (os.cpu_count() or 1) // 4))
 
 
 def cpu_seconds():

@@ -41,7 +41,7 @@ int FrameWriter::workersFor(unsigned cores) {
         throw InputError("PENUMBRA_WRITER_THREADS: '" + std::string(v) +
                          "' is not a number from 1 to 16");
     }
-    return std::clamp(static_cast<int>(cores / 4), 1, 4);
+    return std::clamp(static_cast<int>(cores / 4), 2, 4);
 }
 
 void FrameWriter::record(const Task& task) {

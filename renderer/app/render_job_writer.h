@@ -46,7 +46,8 @@ public:
     // Whether the environment asks for serial writes (PENUMBRA_SERIAL_WRITES set to 1).
     static bool serialRequested();
     // The number of workers: PENUMBRA_WRITER_THREADS (1-16) when set, else one for every 4
-    // cores, 1 to 4 (a frame's encoding already runs on OpenEXR's threads, one a core).
+    // cores, 2 to 4 (a frame's encoding already runs on OpenEXR's threads, one a core; on 2
+    // cores a second writer still overlaps one frame's file writes with another's encoding).
     static int workersFor(unsigned cores);
 
 private:

@@ -1,5 +1,6 @@
-# The frame pipeline of a sequence: files written on the writer threads (one, or three) while
-# the next frames render are the bytes the serial path writes (PENUMBRA_SERIAL_WRITES=1); a
+# The frame pipeline of a sequence: files written on the writer threads (the default, one, or
+# three) while the next frames render are the bytes the serial path writes
+# (PENUMBRA_SERIAL_WRITES=1); a
 # sequence stopped by SIGINT or SIGTERM mid-write leaves no temporary and no partial file, one
 # killed by SIGKILL no partial file (its temporaries go with the next run); the program binary
 # cache is hit by a second process, and a corrupt cache file is ignored with the same output;
@@ -26,6 +27,8 @@ same_frames() {  # same_frames A B WHAT: every frame's EXR and PNG in A are the 
 sequence pipe
 sequence serial PENUMBRA_SERIAL_WRITES=1
 same_frames pipe serial "pipelined and serial writes"
+sequence one PENUMBRA_WRITER_THREADS=1
+same_frames one serial "one writer and serial"
 for f in 1 2 3 4 5 6; do
     [ -s "pipe/$(printf 'f.%04d.json' "$f")" ] || fail "frame $f has no timing JSON"
 done

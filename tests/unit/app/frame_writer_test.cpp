@@ -93,8 +93,8 @@ TEST(FrameWriter, SerialWritesInSubmit) {
 
 TEST(FrameWriter, WorkersFromTheCoresOrTheEnvironment) {
     ::unsetenv("PENUMBRA_WRITER_THREADS");
-    EXPECT_EQ(FrameWriter::workersFor(1), 1);
-    EXPECT_EQ(FrameWriter::workersFor(2), 1);
+    EXPECT_EQ(FrameWriter::workersFor(1), 2);
+    EXPECT_EQ(FrameWriter::workersFor(2), 2);
     EXPECT_EQ(FrameWriter::workersFor(8), 2);
     EXPECT_EQ(FrameWriter::workersFor(16), 4);
     EXPECT_EQ(FrameWriter::workersFor(128), 4);
