@@ -30,6 +30,7 @@ uniform int u_pcf;              // kernel width in texels (1 = a single hard tes
 uniform float u_normal_offset;  // in texels at the receiver's distance
 uniform float u_depth_bias;     // in linear depth units
 #include "common/light_frame.glsl"
+#include "common/receiver_point.glsl"
 
 layout(location = 0) out vec4 o_visibility;
 
@@ -62,16 +63,14 @@ void main() {
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) discard;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-    // Normal offset: a texel's world size at the receiver's distance (from the batch's first
-    // view; every view of a light has nearly the same).
-    float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
-    vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_base].params.y * dist);
+    bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
+    // The normal offset in texels of the batch's first view (a light's views nearly agree).
+    vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[u_view_base].params.y);
     vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
     // The receiver itself (no offset) and its normal in the light's frame, for c_k.
     vec3 q0 = vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up),
                    dot(pos.xyz, u_light_forward));
     vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
-    bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
     vec3 g = geometricNormal(pix);
     vec3 gfl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
     float sum = 0.0, weighted = 0.0, weights = 0.0;

@@ -52,7 +52,8 @@ constexpr ParamSpec mapSizeParam(int def) {
 }
 constexpr ParamSpec kNormalOffsetParam =
     floatParam(kNormalOffset, 1.5, 0.0, 16.0,
-               "receiver offset along its normal, in shadow-map texels (against acne)");
+               "offset of a receiver that casts along its normal, in shadow-map texels "
+               "(against acne; one that casts no shadow is tested where it is)");
 constexpr ParamSpec kDepthBiasParam =
     floatParam(kDepthBias, 0.0005, 0.0, 0.1,
                "constant bias subtracted from receiver depth, in units of the caster depth range");

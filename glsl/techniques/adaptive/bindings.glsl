@@ -8,6 +8,7 @@
 #define ADAPTIVE_UNIT_COMPARE_POSITION 0
 #define ADAPTIVE_UNIT_COMPARE_NORMAL 1
 #define ADAPTIVE_UNIT_COMPARE_MAPS 2  // raw linear depths, through a non-comparing sampler
+#define ADAPTIVE_UNIT_COMPARE_ID 4    // G-buffer object ids (whether a receiver casts)
 #define ADAPTIVE_BINDING_COMPARE_TILE_COUNTS 7  // SSBO of uint per tile and quad
 
 // lit_bits.frag and lit_eval.frag (the units above for the G-buffer and the maps)

@@ -18,6 +18,7 @@ layout(std430, binding = ADAPTIVE_BINDING_COMPARE_TILE_COUNTS) buffer TileCounts
 in vec2 v_uv;
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
+layout(binding = ADAPTIVE_UNIT_COMPARE_ID) uniform isampler2D u_id;
 // Raw linear depths (no compare sampler)
 layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;
 
@@ -31,6 +32,8 @@ uniform int u_tests;           // 1: compare hard-shadow test results instead of
 uniform float u_normal_offset;  // as in the shadow test: texels at the receiver's distance
 uniform float u_depth_bias;
 #include "common/light_frame.glsl"
+#include "common/caster_flags.glsl"
+#include "common/receiver_point.glsl"
 uniform int u_relative;   // 0: |d_a - d_b| < gamma (eq. 3); 1: |1 - d_a / d_b| < gamma (eq. 7)
 uniform int u_tile_size;  // pixels per tile side, 0: no tile counts
 uniform int u_tiles_x;
@@ -74,8 +77,8 @@ void main() {
                   dot(pos.xyz, u_light_forward));
     if (u_tests != 0 || u_mode == 1) {
         vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
-        float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
-        vec3 p = pos.xyz + n * (u_normal_offset * u_views[u_view_a].params.y * dist);
+        bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
+        vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[u_view_a].params.y);
         vec3 qo = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
         if (u_mode == 1) {
             if (lit(u_view_a, qo) && lit(u_view_b, qo) && lit(u_view_c, qo) && lit(u_view_d, qo))

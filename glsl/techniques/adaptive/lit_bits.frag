@@ -18,6 +18,7 @@ layout(std430, binding = ADAPTIVE_BINDING_LIT_BITS) buffer LitBits {
 
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
+layout(binding = ADAPTIVE_UNIT_COMPARE_ID) uniform isampler2D u_id;
 // Raw linear depths (no compare sampler); layer i holds view u_view_base + i
 layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;
 
@@ -28,6 +29,8 @@ uniform int u_pixels;           // G-buffer pixels (one bit plane)
 uniform float u_normal_offset;  // as in the shadow test: texels at the receiver's distance
 uniform float u_depth_bias;
 #include "common/light_frame.glsl"
+#include "common/caster_flags.glsl"
+#include "common/receiver_point.glsl"
 
 // Whether layer I (view u_view_base + I) lights receiver Q (light frame), as the shadow test's
 // hard test (pcf 1) decides.
@@ -49,8 +52,8 @@ void main() {
     if (pos.w == 0.0) return;  // no receiver: its bits stay clear, lit by every map
     vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
     // The evaluation's normal offset: from the light's first view (all are nearly the same).
-    float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
-    vec3 p = pos.xyz + n * (u_normal_offset * u_views[0].params.y * dist);
+    bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
+    vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[0].params.y);
     vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
     int shift = u_view_base & 31;
     uvec2 bits = uvec2(0u);  // the batch spans at most two words

@@ -6,6 +6,7 @@
 
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
+layout(binding = ADAPTIVE_UNIT_COMPARE_ID) uniform isampler2D u_id;
 // The casters' (min, max) distance from the light's plane, seen from its centre through the
 // window [u_win_lo, u_win_lo + u_texel * u_region_size] at distance 1.
 layout(binding = ADAPTIVE_UNIT_LIT_REGION) uniform sampler2D u_region;
@@ -19,6 +20,8 @@ uniform vec2 u_texel;       // window units per level-0 texel
 uniform float u_near;       // the nearest caster's distance
 uniform vec2 u_light_half;  // half the light's size
 #include "common/light_frame.glsl"
+#include "common/caster_flags.glsl"
+#include "common/receiver_point.glsl"
 
 // Whether no caster lies in the pyramid from P (world) to the light: then every map lights P.
 // The pyramid cut between the nearest caster's distance and P's, seen from the light's centre,
@@ -40,7 +43,7 @@ void main() {
     vec4 pos = texelFetch(u_position, pixel, 0);
     if (pos.w == 0.0) discard;  // no receiver
     vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
-    // lit_bits.frag's receiver point, offset along the normal.
-    float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
-    if (certainlyLit(pos.xyz + n * (u_normal_offset * u_texel_size * dist))) discard;
+    // lit_bits.frag's receiver point.
+    bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
+    if (certainlyLit(receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_texel_size))) discard;
 }

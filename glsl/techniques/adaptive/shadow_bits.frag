@@ -12,6 +12,7 @@ layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
 in vec2 v_uv;
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
+layout(binding = ADAPTIVE_UNIT_COMPARE_ID) uniform isampler2D u_id;
 // Raw linear depths (no compare sampler)
 layout(binding = ADAPTIVE_UNIT_COMPARE_MAPS) uniform sampler2DArray u_maps;
 
@@ -21,6 +22,8 @@ uniform float u_normal_offset;  // as in the shadow test: texels at the receiver
 uniform float u_depth_bias;
 uniform int u_stride;     // G-buffer pixels per output pixel along x and y
 #include "common/light_frame.glsl"
+#include "common/caster_flags.glsl"
+#include "common/receiver_point.glsl"
 
 layout(location = 0) out uvec4 o_shadowed;  // bit i: view u_list[i] shadows this pixel
 
@@ -44,8 +47,8 @@ void main() {
     if (pos.w == 0.0) discard;  // no receiver: the cleared 0, lit by every map
     vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
     // The evaluation's normal offset: from the light's first view (all are nearly the same).
-    float dist = max(dot(pos.xyz - u_light_centre, u_light_forward), 0.0);
-    vec3 p = pos.xyz + n * (u_normal_offset * u_views[0].params.y * dist);
+    bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
+    vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[0].params.y);
     vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
     uvec4 bits = uvec4(0u);
     for (int i = 0; i < u_count; ++i)

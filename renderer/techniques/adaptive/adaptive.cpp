@@ -82,6 +82,7 @@ void Adaptive::render(frame::FrameContext& ctx) {
                         (subdivision_ == Subdivision::Auto && light.size.y <= 1e-3f * light.size.x);
     adaptive::LightQuadtree tree(max_depth_, linear, jitter_, seed_);
     views_.clear();
+    compare_.caster_flags = ctx.gpu.casterFlags().id();
     chooseMapSize(ctx);
     ctx.bindOutput();
     const float zero[4] = {0, 0, 0, 0};
@@ -178,7 +179,7 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
         region.pyramid = region_->texture().id();
         region.size = region_->size();
         region.levels = region_->levels();
-        lit_bits_->markLitRegion(ctx.gbuffer, light, compare_.normal_offset, texel, region);
+        lit_bits_->markLitRegion(ctx.gbuffer, light, compare_, texel, region);
     });
 }
 

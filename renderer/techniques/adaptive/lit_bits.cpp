@@ -52,7 +52,7 @@ void LitBits::begin(const passes::GBuffer& gbuffer, int views) {
 }
 
 void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
-                            float normal_offset, float texel_size, const LitRegion& region) {
+                            const CompareSettings& s, float texel_size, const LitRegion& region) {
     const GLint none = 0;
     glClearNamedFramebufferiv(fbo_.id(), GL_STENCIL, 0, &none);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -66,8 +66,10 @@ void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLig
     glUseProgram(p.id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, s.caster_flags);
     glBindTextureUnit(ADAPTIVE_UNIT_LIT_REGION, region.pyramid);
-    gl::setUniform(p, "u_normal_offset", normal_offset);
+    gl::setUniform(p, "u_normal_offset", s.normal_offset);
     gl::setUniform(p, "u_texel_size", texel_size);
     gl::setUniform(p, "u_region_size", region.size);
     gl::setUniform(p, "u_region_levels", region.levels);

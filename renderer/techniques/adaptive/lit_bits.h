@@ -37,11 +37,11 @@ public:
     // Sizes the bits for GBUFFER and at most VIEWS views, all clear (lit everywhere), and marks
     // every pixel for test().
     void begin(const passes::GBuffer& gbuffer, int views);
-    // Marks the pixels of GBUFFER some caster in REGION may shadow (lit_region.frag, with the
-    // tests' NORMAL_OFFSET in texels of TEXEL_SIZE per unit distance): test() tests only those
-    // until the next begin().
+    // Marks the pixels of GBUFFER some caster in REGION may shadow (lit_region.frag, at the
+    // tests' points: S's normal offset in texels of TEXEL_SIZE per unit distance): test()
+    // tests only those until the next begin().
     void markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLight& light,
-                       float normal_offset, float texel_size, const LitRegion& region);
+                       const CompareSettings& s, float texel_size, const LitRegion& region);
     // The pixels markLitRegion() marked since begin() (blocking); none when it was not called.
     std::optional<double> markedPixels() const;
     // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's

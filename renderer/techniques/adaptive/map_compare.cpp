@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "renderer/passes/bindings.h"
+
 namespace penumbra::techniques::adaptive {
 unsigned createRawDepthSampler() {
     unsigned sampler = 0;
@@ -21,6 +23,8 @@ void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLu
                  unsigned sampler, const CompareSettings& s, const scene::RectLight& light) {
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, s.caster_flags);
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps);
     glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler);
     gl::setUniform(program, "u_normal_offset", s.normal_offset);

@@ -23,6 +23,9 @@ struct CompareSettings {
     bool tests = false;          // compare hard-shadow test results instead of stored depths
     float normal_offset = 1.5f;  // of the hard tests, as in passes::ShadowTestSettings
     float depth_bias = 0.0005f;
+    // GpuScene::casterFlags()'s buffer: only receivers that cast take the normal offset
+    // (common/receiver_point.glsl). Set each frame.
+    unsigned caster_flags = 0;
     int tile_size = 0;  // > 0: also count disagreeing pixels per screen tile of this side
     int stride = 1;     // compare every stride-th G-buffer pixel along x and y; counts x stride^2
 };
@@ -38,8 +41,8 @@ struct CompareResult {
 unsigned createRawDepthSampler();
 
 // Binds what every test of G-buffer points against shadow maps reads, for PROGRAM (in use):
-// the G-buffer's position and normal, the maps' depth array MAPS through SAMPLER (raw depths),
-// S's normal offset and depth bias, and LIGHT's frame.
+// the G-buffer's position, normal and ids, the maps' depth array MAPS through SAMPLER (raw
+// depths), S's normal offset, depth bias and caster flags, and LIGHT's frame.
 void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
                  unsigned sampler, const CompareSettings& s, const scene::RectLight& light);
 
