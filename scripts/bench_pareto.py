@@ -47,9 +47,9 @@ SWEEPS = [
     # The defaults with every pixel tested against the maps: what skip_lit saves, side by side.
     ("adaptive_all_pixels", "adaptive", {"technique.skip_lit": False},
      ["technique.target_error=0.02"]),
-    # The defaults with coarser maps where the casters' window is narrow (max_texel 0.002, 256
-    # to 1024 maps): with skip_lit a map's rendering is most of its cost.
-    ("adaptive_max_texel", "adaptive", {"technique.max_texel": 0.002},
+    # The defaults with every map at map_size (max_texel 0): what the coarser maps of narrow
+    # casters' windows save, side by side (with skip_lit a map's rendering is most of its cost).
+    ("adaptive_full_maps", "adaptive", {"technique.max_texel": 0},
      ["technique.target_error=0.02"]),
     ("bitmask", "bitmask", {}, ["technique.budget=5,8,12,0",
                                 "technique.occluders=micropatch,microquad,microrect",

@@ -129,13 +129,12 @@ inline constexpr std::array kAdaptiveParams = {
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter pattern"),
     intParam(kPcf, 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
     mapSizeParam(1024),
-    floatParam(kMaxTexel, 0.0, 0.0, 1.0,
-               "0: every map at map_size; else map_size is the largest map, and each light's "
-               "maps are the smallest power of two from 256 whose texel is at most this wide "
-               "per unit distance from the light (the casters' window from the light's centre "
-               "over the side): narrow windows get coarser maps, which cost less but can add "
-               "error at contacts under small lights (0.002: 1.5-2.3x faster on two conformance "
-               "scenes at the same error, see the README)"),
+    floatParam(kMaxTexel, 0.002, 0.0, 1.0,
+               "map_size is the largest map, and each light's maps are the smallest power of "
+               "two from 256 whose texel is at most this wide per unit distance from the light "
+               "(the casters' window from the light's centre over the side): narrow windows get "
+               "coarser maps, which cost less (1.5-2.3x faster on two conformance scenes at the "
+               "same error, see the README); 0: every map at map_size"),
     kNormalOffsetParam,
     kDepthBiasParam,
 };
