@@ -133,7 +133,7 @@ inline constexpr std::array kAdaptiveParams = {
                "map_size is the largest map, and each light's maps are the smallest power of "
                "two from 256 whose texel is at most this wide per unit distance from the light "
                "(the casters' window from the light's centre over the side): narrow windows get "
-               "coarser maps, which cost less (1.5-2.3x faster on two conformance scenes at the "
+               "coarser maps, which cost less (1.5-3x faster on two conformance scenes at the "
                "same error, see the README); 0: every map at map_size"),
     kNormalOffsetParam,
     kDepthBiasParam,
