@@ -1,16 +1,19 @@
 // Atomic writes: see atomic_file.h.
 #include "renderer/core/atomic_file.h"
 
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <fstream>
-#include <iterator>
-#include <utility>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "renderer/core/error.h"
 #include "renderer/core/process_clock.h"
@@ -21,52 +24,97 @@ namespace {
 constexpr const char* kOnlyRegular = " (an output replaces only a regular file)";
 thread_local AtomicGroup* current_group = nullptr;
 
-// The temporaries being written or awaiting a commit, for the signal handler: a slot's path is
-// complete while its state is kHeld. Lock-free atomics only, so the handler may read them.
-constexpr int kFree = 0, kFilling = 1, kHeld = 2;
-struct TemporarySlot {
-    std::atomic<int> state{kFree};
-    char path[4096];
+// The temporaries this process holds (being written, or written and awaiting a group's
+// commit) and whether a signal is ending it. Every change is made under the lock, which the
+// signal thread (removeTemporariesOnSignal) keeps from the moment it removes them until the
+// process ends: no temporary is created or renamed after that. Never destroyed, so a signal
+// during exit still finds it.
+struct Temporaries {
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::vector<std::string> held;  // absolute paths
+    int writing = 0;                // writes under way (their files may not exist yet)
+    bool ending = false;
 };
-TemporarySlot g_temporaries[64];
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots");
+Temporaries& temporaries() {
+    static auto* t = new Temporaries;
+    return *t;
+}
 
-// The slot holding TMP (absolute), or -1 when none is free or the path is too long (then a
-// signal leaves that file for removeStaleTemporaries).
-int holdTemporary(const std::filesystem::path& tmp) {
+// How long a signal waits for the writes under way to end before it removes the temporaries
+// and ends the process anyway (a write that then creates its file leaves it behind).
+constexpr auto kWriteGrace = std::chrono::seconds(10);
+
+std::string absolutePath(const std::filesystem::path& path) {
     std::error_code ec;
-    const std::string path = std::filesystem::absolute(tmp, ec).string();
-    if (ec || path.size() >= sizeof(TemporarySlot::path)) return -1;
-    for (int i = 0; i < static_cast<int>(std::size(g_temporaries)); ++i) {
-        TemporarySlot& slot = g_temporaries[i];
-        int expected = kFree;
-        if (!slot.state.compare_exchange_strong(expected, kFilling)) continue;
-        std::memcpy(slot.path, path.c_str(), path.size() + 1);
-        slot.state.store(kHeld);
-        return i;
+    const std::filesystem::path abs = std::filesystem::absolute(path, ec);
+    return ec ? path.string() : abs.string();
+}
+
+// Holds TMP before its file is created, as a write under way. Once a signal is ending the
+// process no write starts: the calling thread waits for the end.
+void beginWrite(const std::string& tmp) {
+    Temporaries& t = temporaries();
+    std::unique_lock lock(t.mutex);
+    t.changed.wait(lock, [&] { return !t.ending; });
+    t.held.push_back(tmp);
+    ++t.writing;
+}
+
+// The write of a held temporary has returned (its file complete, or removed on failure).
+void endWrite() {
+    Temporaries& t = temporaries();
+    std::unique_lock lock(t.mutex);
+    --t.writing;
+    t.changed.notify_all();
+    t.changed.wait(lock, [&] { return !t.ending; });
+}
+
+// Renames TMP to PATH (or, with PATH empty, removes TMP) and stops holding it; under the lock,
+// so a signal never removes a file being renamed. Throws RuntimeError when the rename fails.
+void settle(const std::string& tmp, const std::filesystem::path& path) {
+    Temporaries& t = temporaries();
+    std::unique_lock lock(t.mutex);
+    t.changed.wait(lock, [&] { return !t.ending; });
+    if (const auto it = std::find(t.held.begin(), t.held.end(), tmp); it != t.held.end())
+        t.held.erase(it);
+    std::error_code ec;
+    if (path.empty()) {
+        std::filesystem::remove(tmp, ec);
+        return;
     }
-    return -1;
-}
-
-void releaseTemporary(int slot) {
-    if (slot >= 0) g_temporaries[slot].state.store(kFree);
-}
-
-extern "C" void removeTemporariesAndEnd(int signal_number) {
-    for (TemporarySlot& slot : g_temporaries)
-        if (slot.state.load() == kHeld) ::unlink(slot.path);
-    ::signal(signal_number, SIG_DFL);
-    ::raise(signal_number);
-}
-
-void renameIntoPlace(const std::filesystem::path& tmp, const std::filesystem::path& path) {
-    std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
         const std::string why = ec.message();  // before remove() overwrites EC
         std::filesystem::remove(tmp, ec);
         throw RuntimeError(path.string() + ": cannot rename into place: " + why);
     }
+}
+
+// The signal thread: waits for one of SIGNALS, lets the writes under way end, removes every
+// held temporary and ends the process by that signal, the lock still held.
+[[noreturn]] void endOnSignal(sigset_t signals) {
+    int signal_number = 0;
+    while (::sigwait(&signals, &signal_number) != 0) {
+    }
+    Temporaries& t = temporaries();
+    std::unique_lock lock(t.mutex);
+    t.ending = true;
+    t.changed.wait_for(lock, kWriteGrace, [&] { return t.writing == 0; });
+    for (const std::string& path : t.held) ::unlink(path.c_str());
+    ::signal(signal_number, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, signal_number);
+    ::pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+    ::raise(signal_number);
+    ::_exit(128 + signal_number);  // not reached: the signal's default action ends the process
+}
+
+// A thread that began before the signals were blocked may still receive one: pass it on.
+pthread_t g_signal_thread;
+extern "C" void forwardToSignalThread(int signal_number) {
+    ::pthread_kill(g_signal_thread, signal_number);
 }
 
 // When process PID started, in seconds since the epoch (its start ticks and the boot time of
@@ -99,30 +147,46 @@ AtomicGroup::AtomicGroup() : outer_(current_group) {
 
 AtomicGroup::~AtomicGroup() {
     current_group = outer_;
-    std::error_code ec;
-    for (const Pending& p : pending_) {
-        std::filesystem::remove(p.tmp, ec);
-        releaseTemporary(p.slot);
-    }
+    for (const Pending& p : pending_) settle(p.tmp, {});
 }
 
 void AtomicGroup::commit() {
-    for (Pending& p : pending_) {
-        renameIntoPlace(p.tmp, p.path);  // on failure the destructor removes the rest
-        releaseTemporary(std::exchange(p.slot, -1));
+    while (!pending_.empty()) {
+        const Pending p = pending_.front();
+        pending_.erase(pending_.begin());
+        try {
+            settle(p.tmp, p.path);
+        } catch (...) {
+            for (const Pending& rest : pending_) settle(rest.tmp, {});
+            pending_.clear();
+            throw;
+        }
     }
-    pending_.clear();
 }
 
 void removeTemporariesOnSignal() {
-    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
-        struct sigaction old {};
-        if (::sigaction(signal_number, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
-        struct sigaction action {};
-        action.sa_handler = removeTemporariesAndEnd;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(signal_number, &action, nullptr);
-    }
+    static std::once_flag once;
+    std::call_once(once, [] {
+        sigset_t signals;
+        sigemptyset(&signals);
+        for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+            struct sigaction old {};
+            if (::sigaction(signal_number, nullptr, &old) == 0 && old.sa_handler == SIG_DFL)
+                sigaddset(&signals, signal_number);
+        }
+        // Blocked here, so in every thread started from now on; the signal thread waits for them.
+        ::pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+        std::thread thread(endOnSignal, signals);
+        g_signal_thread = thread.native_handle();
+        thread.detach();
+        for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+            if (!sigismember(&signals, signal_number)) continue;
+            struct sigaction action {};
+            action.sa_handler = forwardToSignalThread;
+            sigemptyset(&action.sa_mask);
+            ::sigaction(signal_number, &action, nullptr);
+        }
+    });
 }
 
 int removeStaleTemporaries(const std::filesystem::path& path) {
@@ -169,29 +233,25 @@ void writeAtomically(const std::filesystem::path& path,
     if (const std::string why = notReplaceableReason(path); !why.empty())
         throw RuntimeError(path.string() + ": " + why + kOnlyRegular);
     const std::filesystem::path tmp = temporaryPathFor(path);
-    const int slot = holdTemporary(tmp);
+    const std::string held = absolutePath(tmp);
+    beginWrite(held);
     try {
         write(tmp);
     } catch (const Error&) {
-        std::filesystem::remove(tmp, ec);
-        releaseTemporary(slot);
+        endWrite();
+        settle(held, {});
         throw;
     } catch (const std::exception& e) {
-        std::filesystem::remove(tmp, ec);
-        releaseTemporary(slot);
+        endWrite();
+        settle(held, {});
         throw RuntimeError(path.string() + ": write failed: " + e.what());
     }
+    endWrite();
     if (current_group) {
-        current_group->pending_.push_back({tmp, path, slot});
+        current_group->pending_.push_back({held, path});
         return;
     }
-    try {
-        renameIntoPlace(tmp, path);
-    } catch (...) {
-        releaseTemporary(slot);
-        throw;
-    }
-    releaseTemporary(slot);
+    settle(held, path);
 }
 
 void checkOutputPath(const std::filesystem::path& path, const std::string& label) {

@@ -35,8 +35,8 @@ private:
     friend void writeAtomically(const std::filesystem::path&,
                                 const std::function<void(const std::filesystem::path&)>&);
     struct Pending {
-        std::filesystem::path tmp, path;
-        int slot;  // in the signal handler's list (removeTemporariesOnSignal)
+        std::string tmp;  // absolute, as held for the signal thread (removeTemporariesOnSignal)
+        std::filesystem::path path;
     };
     std::vector<Pending> pending_;
     AtomicGroup* outer_;
@@ -45,7 +45,10 @@ private:
 // From now on SIGINT, SIGTERM and SIGHUP (where their action is the default, to end the
 // process) first remove every temporary this process is writing or holding for a group's
 // commit, then end it as before; a killed (SIGKILL) process leaves them for
-// removeStaleTemporaries.
+// removeStaleTemporaries. The signals are blocked in the calling thread, and so in every thread
+// it starts later, and a thread of their own waits for them: it lets the writes under way end
+// (10 s at most), removes the temporaries and ends the process with no new one begun. Call it
+// before starting threads that write; once is enough (later calls do nothing).
 void removeTemporariesOnSignal();
 
 // Removes the temporaries "<dir>/.<name>.<pid>.tmp" of PATH left by a process that is gone (its
