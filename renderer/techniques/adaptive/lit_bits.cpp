@@ -64,12 +64,8 @@ void LitBits::markLitRegion(const passes::GBuffer& gbuffer, const scene::RectLig
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     const gl::Program& p = region_program_;
     glUseProgram(p.id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
-    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, s.caster_flags);
+    bindReceiverTest(p, gbuffer, s);
     glBindTextureUnit(ADAPTIVE_UNIT_LIT_REGION, region.pyramid);
-    gl::setUniform(p, "u_normal_offset", s.normal_offset);
     gl::setUniform(p, "u_texel_size", texel_size);
     gl::setUniform(p, "u_region_size", region.size);
     gl::setUniform(p, "u_region_levels", region.levels);

@@ -19,15 +19,20 @@ unsigned createRawDepthSampler() {
     return sampler;
 }
 
-void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
-                 unsigned sampler, const CompareSettings& s, const scene::RectLight& light) {
+void bindReceiverTest(const gl::Program& program, const passes::GBuffer& gbuffer,
+                      const CompareSettings& s) {
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_NORMAL, gbuffer.normal().id());
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, s.caster_flags);
+    gl::setUniform(program, "u_normal_offset", s.normal_offset);
+}
+
+void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
+                 unsigned sampler, const CompareSettings& s, const scene::RectLight& light) {
+    bindReceiverTest(program, gbuffer, s);
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_MAPS, maps);
     glBindSampler(ADAPTIVE_UNIT_COMPARE_MAPS, sampler);
-    gl::setUniform(program, "u_normal_offset", s.normal_offset);
     gl::setUniform(program, "u_depth_bias", s.depth_bias);
     passes::setLightFrameUniforms(program, light);
 }

@@ -40,9 +40,14 @@ struct CompareResult {
 // A new sampler object reading the raw depths of shadow maps: nearest, clamped, no compare.
 unsigned createRawDepthSampler();
 
+// Binds where a test of G-buffer points finds its receivers, for PROGRAM (in use): the
+// G-buffer's position, normal and ids, S's caster flags and normal offset (receiver_point.glsl).
+void bindReceiverTest(const gl::Program& program, const passes::GBuffer& gbuffer,
+                      const CompareSettings& s);
+
 // Binds what every test of G-buffer points against shadow maps reads, for PROGRAM (in use):
-// the G-buffer's position, normal and ids, the maps' depth array MAPS through SAMPLER (raw
-// depths), S's normal offset, depth bias and caster flags, and LIGHT's frame.
+// bindReceiverTest's bindings, the maps' depth array MAPS through SAMPLER (raw depths), S's
+// depth bias and LIGHT's frame.
 void bindMapTest(const gl::Program& program, const passes::GBuffer& gbuffer, GLuint maps,
                  unsigned sampler, const CompareSettings& s, const scene::RectLight& light);
 
