@@ -318,7 +318,7 @@ TEST(AdaptiveGL, PixelsNoCasterCanShadowAreNotTestedAndLookTheSame) {
 }
 
 TEST(AdaptiveGL, NarrowCasterWindowsGetCoarserMaps) {
-    // max_texel: each light's maps are the smallest power of two from 256 whose texel, the
+    // max_texel: each light's maps are the smallest multiple of 128 from 256 whose texel, the
     // casters' window from the light's centre over the side, is at most max_texel per unit
     // distance. adaptive_ball's ball spans about 0.4 (tangent units) from the light: 256 maps at
     // 0.002; the random scene behind tilted_light_union.json spans the 80-degree clamp (6.0):

@@ -130,8 +130,8 @@ inline constexpr std::array kAdaptiveParams = {
     intParam(kPcf, 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
     mapSizeParam(1024),
     floatParam(kMaxTexel, 0.002, 0.0, 1.0,
-               "map_size is the largest map, and each light's maps are the smallest power of "
-               "two from 256 whose texel is at most this wide per unit distance from the light "
+               "map_size is the largest map, and each light's maps are the smallest multiple "
+               "of 128 from 256 whose texel is at most this wide per unit distance from the light "
                "(the casters' window from the light's centre over the side): narrow windows get "
                "coarser maps, which cost less (1.5-3x faster on two conformance scenes at the "
                "same error, see the README); 0: every map at map_size"),
