@@ -151,17 +151,9 @@ AtomicGroup::~AtomicGroup() {
 }
 
 void AtomicGroup::commit() {
-    while (!pending_.empty()) {
-        const Pending p = pending_.front();
-        pending_.erase(pending_.begin());
-        try {
-            settle(p.tmp, p.path);
-        } catch (...) {
-            for (const Pending& rest : pending_) settle(rest.tmp, {});
-            pending_.clear();
-            throw;
-        }
-    }
+    // In the order written; when a rename fails, the destructor removes the rest.
+    for (; !pending_.empty(); pending_.erase(pending_.begin()))
+        settle(pending_.front().tmp, pending_.front().path);
 }
 
 void removeTemporariesOnSignal() {

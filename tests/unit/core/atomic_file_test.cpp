@@ -1,6 +1,8 @@
 // Atomic writes under signals: a process whose threads keep writing files, some in groups,
-// ends by SIGTERM or SIGINT with no temporary left and every final-named file complete.
+// ends by SIGTERM or SIGINT with no temporary left and every final-named file complete; a
+// group whose rename fails leaves none of its other files.
 #include "renderer/core/atomic_file.h"
+#include "renderer/core/error.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -94,6 +96,24 @@ TEST(AtomicFile, SignalsLeaveNoTemporaryWhileThreadsWrite) {
     }
     fs::remove_all(root);
     EXPECT_GT(files, 24) << "the writers wrote too little for the test to mean anything";
+}
+
+TEST(AtomicFile, AGroupWhoseRenameFailsLeavesNothingOfTheRest) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("penumbra_group_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        AtomicGroup group;
+        writeFileAtomically(dir / "a", "a");
+        writeFileAtomically(dir / "b", "b");
+        fs::create_directories(dir / "a" / "in_the_way");  // a folder no file replaces
+        EXPECT_THROW(group.commit(), RuntimeError);
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename(), "a") << "left " << entry.path();
+    EXPECT_TRUE(fs::is_directory(dir / "a"));
+    fs::remove_all(dir);
 }
 
 }  // namespace
