@@ -108,19 +108,27 @@ TEST(SsmLayersGL, ConvexObjectDoesNotShadowItself) {
 }
 
 TEST(SsmLayersGL, OneLayerIsThePapersSplit) {
-    // layers 1: objects of role both occlude only (lit), the role-receiver floor receives.
+    // layers 1: objects of role both occlude only, the role-receiver floor receives. Nothing
+    // shadows the objects: they see the light above their own horizon, which layers 4 takes as
+    // well, times the other casters' shadows (the duck's on itself, the pillar's foot).
     const Image img = render(kDefault, ssm(1), kSmall);
+    const Image received = render(kDefault, ssm(4), kSmall);
     const auto& v = channel(img, "visibility");
+    const auto& v4 = channel(received, "visibility");
     const auto& id = channel(img, "id");
-    long objects = 0, shadowed_floor = 0;
+    long objects = 0, unshadowed = 0, shadowed_floor = 0;
     for (size_t i = 0; i < v.size(); ++i) {
         if (id[i] >= 1) {
-            EXPECT_EQ(v[i], 1.0f) << "pixel " << i;
+            EXPECT_GE(v[i], v4[i]) << "pixel " << i;
             ++objects;
+            unshadowed += v[i] > v4[i] + 0.25f;
         }
         shadowed_floor += id[i] == 0 && v[i] < 0.5f;
     }
+    std::printf("ssm layers 1: %ld object pixels, %ld of them shadowed only with layers 4\n",
+                objects, unshadowed);
     EXPECT_GT(objects, 1000);
+    EXPECT_GT(unshadowed, 100);
     EXPECT_GT(shadowed_floor, 500);
     // Without a role-receiver object there is nothing to receive: refused, naming the way out.
     try {

@@ -40,9 +40,10 @@ uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - 
 // light: a level-0 offset left coarse levels shadowing their own surface in bands); false
 // where the pixel has no receiving geometry or lies behind the light. HORIZON is its tangent
 // plane seen from the light: the height of light point (u, v) (the light as the unit square,
-// u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only a receiver
-// that casts hides the light below its plane (as its far side does for `exact`); others get
-// the plane 1 (all above).
+// u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only an object
+// that casts hides the light below its plane (as its far side does for `exact`), a receiver or
+// not (role `occluder`: false, but HORIZON set, for its visibility); others get the plane 1
+// (all above).
 bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     p = vec3(0.0);
     horizon = vec3(1.0, 0.0, 0.0);
@@ -50,7 +51,7 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     if (pos.w == 0.0) return false;
     int id = texelFetch(u_id, pix, 0).r;
     vec2 role = id < 0 ? vec2(0.0) : texelFetch(u_receives, ivec2(id, 0), 0).rg;
-    if (role.x < 0.5) return false;
+    if (role.x < 0.5 && role.y < 0.5) return false;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
     vec3 d = pos.xyz - u_light_centre;
     float z = dot(d, u_light_forward);
@@ -63,6 +64,7 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
         vec2 e = 2.0 * u_light_half * vec2(dot(g, u_light_right), dot(g, u_light_up));
         horizon = vec3(-dot(d, g) - 0.5 * (e.x + e.y), e);
     }
+    if (role.x < 0.5) return false;
     // The surface's depth step per lateral step, sin / cos^2 of the angle between its normal and
     // the direction to the light's centre, is what the offset along the normal must make up, up
     // to 1 (45 degrees) on a smooth surface and 2 (62 degrees) on a flat face. A flat face

@@ -41,8 +41,9 @@ void main() {
     o_class = vec4(float(cls), 0.0, 0.0, 0.0);
     if (cls == CLASS_UMBRA) atomicAdd(s_umbra, 1u);
     vec3 p, horizon;
-    if (cls == CLASS_UMBRA || !receiverAt(pix, 0, p, horizon)) return;
-    if (cls == CLASS_LIT) {
+    if (cls == CLASS_UMBRA) return;
+    // An `occluder` (casts, receives nothing; classified lit) sees the light above its plane.
+    if (!receiverAt(pix, 0, p, horizon) || cls == CLASS_LIT) {
         o_visibility.x = litVisibility(horizon);
         return;
     }

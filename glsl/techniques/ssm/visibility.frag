@@ -8,8 +8,8 @@
 // a light-facing one); a pixel no layer matches takes the nearest layer, which for a pixel
 // beyond a full stack of layers is the deepest: what shadows that surface shadows the pixel
 // behind it too (a lower bound on its occlusion). Pixels of objects that receive no shadow are
-// lit. Diagnostic 0: the summed occlusion; 1: the receiver layer used (of the texel weighing
-// most; -1 where none).
+// lit, less the light below their horizon on those that cast. Diagnostic 0: the summed
+// occlusion; 1: the receiver layer used (of the texel weighing most; -1 where none).
 #include "techniques/ssm/bindings.glsl"
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
@@ -107,7 +107,17 @@ void main() {
     o_occlusion = vec4(0.0);
     o_layer = vec4(-1.0, 0.0, 0.0, 0.0);
     int id = texelFetch(u_id, pix, 0).r;
-    if (u_shadowed == 0 || id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) return;
+    if (u_shadowed == 0 || id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) {
+        // No caster shadows it, but an object that casts hides from itself the light's part
+        // below its surface's horizon (role `occluder`, or nothing shadowed), as every
+        // technique's casters do.
+        if (id >= 0 && objectCasts(id)) {
+            float share = shareAboveHorizon(pos.xyz, geometricNormal(pix));
+            o_visibility = vec4(share, 0.0, 0.0, 0.0);
+            o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
+        }
+        return;
+    }
     vec3 d = pos.xyz - u_light_centre;
     float z = dot(d, u_light_forward);
     if (z <= 0.0) return;
