@@ -13,6 +13,10 @@
 
 // lit_bits.frag and lit_eval.frag (the units above for the G-buffer and the maps)
 #define ADAPTIVE_BINDING_LIT_BITS 8  // SSBO of uint: word w of pixel p at w * pixels + p
+#define ADAPTIVE_BINDING_LIT_TILE_VIEWS 9  // SSBO of uint: the views tested in each screen tile
+#define ADAPTIVE_BINDING_LIT_TILE_SETS 10  // SSBO of uint: each screen tile's weights' block
+#define ADAPTIVE_BINDING_LIT_WEIGHTS 11    // SSBO of uint: the blocks (TileWeights::blocks)
+#define ADAPTIVE_BINDING_LIT_HORIZON_TILES 12  // SSBO of uint: horizon_tiles.frag's flags
 #define ADAPTIVE_UNIT_LIT_REGION 3  // the casters' min/max distance pyramid from the light's centre
 
 #endif

@@ -2,7 +2,8 @@
 // `adaptive`: the hard tests of a batch of light-sample maps at every G-buffer pixel, one bit per
 // view (set: shadowed) in a bit buffer kept for the whole light, so that each map is tested once
 // and dropped: the cells' comparisons read the bits back and lit_eval.frag weights them. Only
-// pixels whose stencil lit_region.frag set are shaded: the others' bits stay clear.
+// pixels whose stencil lit_region.frag set are shaded, and of a view only the screen tiles its
+// cells are refined in (the others weigh it 0): the others' bits stay clear.
 #include "common/sample_view.glsl"
 #include "techniques/adaptive/bindings.glsl"
 
@@ -16,6 +17,10 @@ layout(std430, binding = ADAPTIVE_BINDING_LIT_BITS) buffer LitBits {
     uint u_bits[];  // plane-major: word w of pixel p at w * u_pixels + p
 };
 
+layout(std430, binding = ADAPTIVE_BINDING_LIT_TILE_VIEWS) readonly buffer TileViews {
+    uint u_tile_views[];  // tile-major: word w of tile t at t * u_planes + w; set: tested
+};
+
 layout(binding = ADAPTIVE_UNIT_COMPARE_POSITION) uniform sampler2D u_position;
 layout(binding = ADAPTIVE_UNIT_COMPARE_NORMAL) uniform sampler2D u_normal;
 layout(binding = ADAPTIVE_UNIT_COMPARE_ID) uniform isampler2D u_id;
@@ -26,6 +31,9 @@ uniform int u_view_base;        // the batch's first view
 uniform int u_count;            // views in the batch, at most 32
 uniform int u_width;            // G-buffer width
 uniform int u_pixels;           // G-buffer pixels (one bit plane)
+uniform int u_planes;           // words per pixel (and per tile of u_tile_views)
+uniform int u_tile_side;        // screen tiles' side in pixels
+uniform int u_tile_columns;     // screen tiles per row
 uniform float u_normal_offset;  // as in the shadow test: texels at the receiver's distance
 uniform float u_depth_bias;
 #include "common/light_frame.glsl"
@@ -48,6 +56,16 @@ bool lit(int i, vec3 q) {
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // The batch's views this pixel's tile tests, at their bits' places.
+    int shift = u_view_base & 31, word = u_view_base >> 5;
+    ivec2 tile = pixel / u_tile_side;
+    int at_tile = (tile.y * u_tile_columns + tile.x) * u_planes + word;
+    uvec2 tested = uvec2(u_tile_views[at_tile], 0u);
+    if (word + 1 < u_planes) tested.y = u_tile_views[at_tile + 1];
+    uvec2 batch = uvec2(u_count + shift >= 32 ? ~0u : (1u << uint(u_count + shift)) - 1u,
+                        u_count + shift > 32 ? (1u << uint(u_count + shift - 32)) - 1u : 0u);
+    batch.x &= ~((1u << uint(shift)) - 1u);
+    if (all(equal(tested & batch, uvec2(0u)))) return;
     vec4 pos = texelFetch(u_position, pixel, 0);
     if (pos.w == 0.0) return;  // no receiver: its bits stay clear, lit by every map
     vec3 n = normalize(texelFetch(u_normal, pixel, 0).xyz);
@@ -55,11 +73,13 @@ void main() {
     bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
     vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[0].params.y);
     vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
-    int shift = u_view_base & 31;
     uvec2 bits = uvec2(0u);  // the batch spans at most two words
-    for (int i = 0; i < u_count; ++i)
-        if (!lit(i, q)) bits[(shift + i) >> 5] |= 1u << uint((shift + i) & 31);
-    int at = (u_view_base >> 5) * u_pixels + pixel.y * u_width + pixel.x;
+    for (int i = 0; i < u_count; ++i) {
+        uint bit = 1u << uint((shift + i) & 31);
+        int w = (shift + i) >> 5;
+        if ((tested[w] & bit) != 0u && !lit(i, q)) bits[w] |= bit;
+    }
+    int at = word * u_pixels + pixel.y * u_width + pixel.x;
     if (bits.x != 0u) u_bits[at] |= bits.x;
     if (bits.y != 0u) u_bits[at + u_pixels] |= bits.y;
 }

@@ -2,6 +2,8 @@
 // `adaptive`: the light's visibility from its maps' shadow bits (lit_bits.frag): adds
 // sum_k w_k lit_k, and the beauty sums, as passes/shadow_accumulate.frag does from the maps
 // themselves (hard tests), with no map left to read: each view costs a bit and a few flops.
+// Each screen tile weights the views of its own leaves (the cells refined there), and loops
+// over those alone.
 #include "common/bindings.glsl"
 #include "common/caster_flags.glsl"
 #include "common/geometric_normal.glsl"
@@ -14,6 +16,15 @@ layout(std430, binding = ADAPTIVE_BINDING_LIT_BITS) readonly buffer LitBits {
     uint u_bits[];  // plane-major: word w of pixel p at w * u_pixels + p; set: shadowed
 };
 
+layout(std430, binding = ADAPTIVE_BINDING_LIT_TILE_SETS) readonly buffer TileBlocks {
+    uint u_tile_blocks[];  // per screen tile: its weights' block in u_blocks
+};
+layout(std430, binding = ADAPTIVE_BINDING_LIT_WEIGHTS) readonly buffer Blocks {
+    // A block: n, the bits of sum_k w_k (in view order, in float), then n pairs of a view k and
+    // the bits of w_k, ascending in k, for the views of nonzero weight in the tile.
+    uint u_blocks[];
+};
+
 in vec2 v_uv;
 layout(binding = UNIT_ACCUMULATE_POSITION) uniform sampler2D u_position;
 layout(binding = UNIT_ACCUMULATE_NORMAL) uniform sampler2D u_normal;
@@ -22,7 +33,8 @@ layout(binding = UNIT_ACCUMULATE_ID) uniform isampler2D u_id;
 uniform int u_count;   // the light's views
 uniform int u_width;   // G-buffer width
 uniform int u_pixels;  // G-buffer pixels (one bit plane)
-uniform float u_weight_sum;  // sum_k w_k over the u_count views, added in order in float
+uniform int u_tile_side;     // screen tiles' side in pixels
+uniform int u_tile_columns;  // screen tiles per row
 #include "common/light_frame.glsl"
 
 layout(location = 0) out vec4 o_visibility;
@@ -39,36 +51,42 @@ void main() {
     vec3 g = geometricNormal(pix);
     vec3 gfl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
     int at = pix.y * u_width + pix.x;
+    ivec2 tile = pix / u_tile_side;
+    int block = int(u_tile_blocks[tile.y * u_tile_columns + tile.x]);
+    int views = int(u_blocks[block]);
     // A pixel of an object that casts no shadow, lit by every map (most of an image: skip_lit
     // tests only the pixels a caster may shadow, the others' bits stay clear): every view is
     // lit, so the sums below are sum_k w_k and a contribution share of exactly 1: the host's
-    // sum of the weights (the same floats), without the per-view geometry (a block of such
+    // sum of the tile's weights (the same floats), without the per-view geometry (a block of such
     // pixels leaves the loop below at once: 113-121 -> 39-44 ms at 1024 x 768 on light_size_2).
     if (!casts) {
         uint any_shadowed = 0u;
         for (int base = 0; base < u_count; base += 32)
             any_shadowed |= u_bits[(base >> 5) * u_pixels + at];
         if (any_shadowed == 0u) {
-            o_visibility = vec4(u_weight_sum, 1.0, 1.0, 1.0);
+            o_visibility = vec4(uintBitsToFloat(u_blocks[block + 1]), 1.0, 1.0, 1.0);
             return;
         }
     }
     float sum = 0.0, weighted = 0.0, weights = 0.0;
-    for (int base = 0; base < u_count; base += 32) {
-        uint shadowed = u_bits[(base >> 5) * u_pixels + at];
-        for (int i = 0; i < min(32, u_count - base); ++i) {
-            int k = base + i;
-            float w = u_lookups[3 * k + 2].y;
-            // As shadow_accumulate.frag: a sample below a caster's tangent plane is hidden.
-            vec3 d = u_lookups[3 * k].xyz - q0;
-            bool hidden = ((shadowed >> uint(i)) & 1u) != 0u || (casts && dot(gfl, d) <= 0.0);
-            float lit = hidden ? 0.0 : 1.0;
-            float d2 = dot(d, d);
-            float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
-            sum += w * lit;
-            weighted += w * c * lit;
-            weights += w * c;
+    int word = -1;
+    uint shadowed = 0u;
+    for (int j = 0; j < views; ++j) {
+        int k = int(u_blocks[block + 2 + 2 * j]);
+        float w = uintBitsToFloat(u_blocks[block + 3 + 2 * j]);
+        if (k >> 5 != word) {
+            word = k >> 5;
+            shadowed = u_bits[word * u_pixels + at];
         }
+        // As shadow_accumulate.frag: a sample below a caster's tangent plane is hidden.
+        vec3 d = u_lookups[3 * k].xyz - q0;
+        bool hidden = ((shadowed >> uint(k & 31)) & 1u) != 0u || (casts && dot(gfl, d) <= 0.0);
+        float lit = hidden ? 0.0 : 1.0;
+        float d2 = dot(d, d);
+        float c = max(dot(nl, d), 0.0) * max(-d.z, 0.0) / max(d2 * d2, 1e-30);
+        sum += w * lit;
+        weighted += w * c * lit;
+        weights += w * c;
     }
     o_visibility = vec4(sum, weighted, weights, 1.0);  // a: the light was sampled
 }

@@ -44,6 +44,7 @@ Adaptive::Adaptive(const Params& p)
     if (p.getEnum(kMetric) == Metric::Tile) compare_.tile_size = p.get(kTileSize);
     compare_.stride = p.get(kCompareStride);
     settings_.test.pcf = p.get(kPcf);
+    refine_tile_ = p.get(kRefineTile);
     if (accumulate_path_ && weighting_ == Weighting::Area)
         throw RuntimeError(
             "adaptive: evaluation \"accumulate\" adds each map when it is rendered, before "
@@ -98,6 +99,17 @@ void Adaptive::render(frame::FrameContext& ctx) {
         ctx.pass("adaptive_light_view", [&] { light_view_->render(ctx.gpu, m); });
     }
     const passes::GBuffer& receivers = light_centre_ ? *light_view_ : ctx.gbuffer;
+    tiles_.emplace(litPath() ? refine_tile_ : 0, receivers.width(), receivers.height());
+    tile_of_ = tiles_->tilesAtStride(compare_.stride);
+    cell_tiles_ = {tiles_->all()};
+    horizon_tiles_ = TileMask(size_t(tiles_->count()), 0);
+    if (litPath() && tiles_->count() > 1)
+        ctx.pass("adaptive_horizon_tiles", [&] {
+            horizon_tiles_ =
+                lit_bits_->horizonTiles(ctx.gbuffer, light, ctx.gpu.casterFlags(), *tiles_);
+        });
+    view_tiles_.clear();
+    tiled_leaves_.clear();
     const double area = screen_metric_ ? double(receivers.width()) * double(receivers.height())
                                        : double(settings_.map_size) * double(settings_.map_size);
     const Refinement r = refine(ctx, tree, receivers, area);
@@ -122,7 +134,11 @@ Refinement Adaptive::refine(frame::FrameContext& ctx, adaptive::LightQuadtree& t
     std::optional<adaptive::PixelErrorBudget> pixel_budget;  // the bits path's
     for (;; ++level) {
         renderNewMaps(ctx, tree, level);
-        if (level >= max_depth_ || cells.empty()) break;
+        if (level >= max_depth_ || cells.empty()) {
+            for (size_t i = 0; i < cells.size() && bitsPath(); ++i)  // leaves where they live
+                tiled_leaves_.push_back({cells[i], cell_tiles_[i]});
+            break;
+        }
         if (bitsPath()) {
             cells = refineByBits(ctx, tree, cells, receivers, level, budget, pixel_budget, r);
             continue;
@@ -234,10 +250,10 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
             glEnable(GL_BLEND);
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
-            float weight_sum = 0.0f;  // in the order and precision lit_eval.frag adds them
-            for (int k = 0; k < std::min(n, lit_bits_->capacity()); ++k)
-                weight_sum += views_[size_t(k)].depth.y;
-            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags(), weight_sum);
+            const adaptive::TileWeights tile_weights =
+                adaptive::tileWeights(tree, weighting_, tiled_leaves_, tiles_->count());
+            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags(), *tiles_,
+                                tile_weights);
             glDisable(GL_BLEND);
             glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         });
@@ -262,6 +278,13 @@ void Adaptive::addStatistics(frame::FrameContext& ctx, const adaptive::LightQuad
     st["maps_held"] = std::max(st.value("maps_held", 0), held);
     if (const auto tested = lit_bits_ ? lit_bits_->markedPixels() : std::nullopt)  // skip_lit
         st["tested_pixels"] = st.value("tested_pixels", 0.0) + *tested;
+    if (litPath() && n > 0) {  // the share of (view, screen tile) pairs tested, the most of a light
+        double tested = 0;
+        for (const auto& tiles : view_tiles_)
+            tested += double(std::count(tiles.begin(), tiles.end(), 1));
+        const double share = tested / (double(n) * double(tiles_->count()));
+        st["tested_tile_share"] = std::max(st.value("tested_tile_share", 0.0), share);
+    }
     if (error_metric_)
         st["estimated_error"] = std::max(st.value("estimated_error", 0.0), r.estimated_error);
     // CPU work between passes, which a GPU's timer queries leave out or put in a pass's time.

@@ -7,6 +7,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "renderer/techniques/adaptive/map_compare.h"
 #include "renderer/techniques/adaptive/map_size.h"
 #include "renderer/techniques/adaptive/pixel_error_budget.h"
+#include "renderer/techniques/adaptive/screen_tiles.h"
 #include "renderer/techniques/light_sampling.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -59,6 +61,7 @@ inline constexpr IntKey kMaxDepth{"max_depth"};
 inline constexpr IntKey kMaxMaps{"max_maps"};
 inline constexpr BoolKey kSkipLit{"skip_lit"};
 inline constexpr FloatKey kMaxTexel{"max_texel"};
+inline constexpr IntKey kRefineTile{"refine_tile"};
 
 inline constexpr std::array kAdaptiveParams = {
     enumParam(kMetric, Metric::Error,
@@ -123,6 +126,11 @@ inline constexpr std::array kAdaptiveParams = {
               "light (a min/max pyramid of the casters seen from the light's centre, searched "
               "over the pyramid from the pixel to the light) is not tested against the maps: "
               "only pixels a caster may shadow pay for every map (false: every pixel tested)"),
+    intParam(kRefineTile, 0, 0, 4096,
+             "the default storage: a split cell's new maps are tested, and its children "
+             "weighted, only in the screen tiles (this side in pixels) where its corners "
+             "disagreed, their neighbours and the tiles where a caster's tangent plane cuts "
+             "the light; elsewhere the cell stays a leaf (0: the whole image, as the paper)"),
     boolParam(kJitter, true,
               "move each sample to a random point of its finest-grid cell (false: the paper's "
               "regular lattice, which aliases with edges parallel to the light's)"),
@@ -227,6 +235,22 @@ private:
     // Whether splitting CELL keeps the light's maps within max_maps.
     bool fitsMapBudget(const LightQuadtree& tree, const QuadtreeCell& cell) const;
 
+    // Metric "error": each of CELLS' estimated error from COUNTS (comparisons() order) over
+    // SHADOWED pixels, by its worse diagonal.
+    static std::vector<double> cellErrors(const LightQuadtree& tree,
+                                          const std::vector<QuadtreeCell>& cells,
+                                          const std::vector<CompareResult>& counts,
+                                          double shadowed);
+    // The bits path: splits CHOSEN of CELLS (cell_tiles_ parallel) within the map budget (a
+    // refused one goes to REFUSED), each in the tiles around WHERE it disagrees and the
+    // horizon's (horizon_tiles_) within its own; records the
+    // tiles where each cell stays a leaf and sets cell_tiles_ to the children's.
+    std::vector<QuadtreeCell> splitInTiles(LightQuadtree& tree,
+                                           const std::vector<QuadtreeCell>& cells,
+                                           const std::vector<size_t>& chosen,
+                                           const std::vector<std::vector<std::uint32_t>>& where,
+                                           const std::function<void(size_t)>& refused,
+                                           bool& budget_hit);
     // Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
     // order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
     std::vector<QuadtreeCell> splitByError(LightQuadtree& tree,
@@ -298,6 +322,15 @@ private:
     std::unique_ptr<passes::LightDepthPass> region_pass_;  // their distances into it
     std::unique_ptr<passes::GBuffer> light_view_;          // receivers seen from the light's centre
     passes::SampleViewBuffer views_buffer_;
+    // The lit path's screen tiles (refine_tile) for the current light: the comparison pixels'
+    // tiles, the tiles of the level's cells (parallel to them), of each view (where it is
+    // tested) and of each cell where it stays a leaf (where its corners are weighted).
+    int refine_tile_ = 0;
+    std::optional<ScreenTiles> tiles_;
+    std::vector<std::uint32_t> tile_of_;
+    std::vector<TileMask> cell_tiles_, view_tiles_;
+    TileMask horizon_tiles_;  // where a caster's own surface cuts the light: every split's
+    std::vector<TiledLeaf> tiled_leaves_;
     std::vector<passes::SampleView> views_;
 };
 

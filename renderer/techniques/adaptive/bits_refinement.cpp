@@ -55,7 +55,8 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
         if (rss_estimate_) budget.emplace(target_error_, bits.pixels, per_pixel);
     }
     // The sum needs each pair's count alone; the per-pixel budget, where each cell disagrees.
-    const Disagreements found = bits.disagreements(pairs, rss_estimate_);
+    const Disagreements found =
+        bits.disagreements(pairs, rss_estimate_ || tiles_->count() > 1, cell_tiles_, tile_of_);
     std::vector<double> errors;
     for (size_t i = 0; i < cells.size(); ++i) {
         r.comparisons += int(pairs[i].size());
@@ -66,21 +67,18 @@ std::vector<QuadtreeCell> Adaptive::refineByBits(frame::FrameContext& ctx, Light
     // The diagnostic: the pixels where some cell disagrees.
     if (!light_centre_) map_compare_->raiseLevels(found.anywhere, level);
     cpu_start = std::chrono::steady_clock::now();
+    std::vector<QuadtreeCell> next;
     if (!rss_estimate_) {  // the sum: each cell's worse diagonal, as the queries count it
         std::vector<CompareResult> counts;
         for (size_t n : found.pairs) counts.push_back({double(n) * bits.scale, 0.0});
-        auto next = splitByError(tree, cells, counts, shadowed_, sum_budget, r.budget_hit);
-        addCpuTime();
-        return next;
-    }
-    std::vector<QuadtreeCell> next;
-    for (size_t i : budget->choose(errors, found.where)) {
-        if (!fitsMapBudget(tree, cells[i])) {
-            r.budget_hit = true;
-            budget->refused(i);
-            continue;
-        }
-        for (const auto& child : tree.split(cells[i])) next.push_back(child);
+        const std::vector<double> cell_errors = cellErrors(tree, cells, counts, shadowed_);
+        next = splitInTiles(
+            tree, cells, sum_budget.choose(cell_errors), found.where,
+            [&](size_t i) { sum_budget.refused(cell_errors[i]); }, r.budget_hit);
+    } else {
+        next = splitInTiles(
+            tree, cells, budget->choose(errors, found.where), found.where,
+            [&](size_t i) { budget->refused(i); }, r.budget_hit);
     }
     addCpuTime();
     return next;

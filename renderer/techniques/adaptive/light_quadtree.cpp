@@ -91,25 +91,28 @@ std::vector<QuadtreeCell> LightQuadtree::split(const QuadtreeCell& c) {
     return children;
 }
 
-std::vector<float> LightQuadtree::weights(Weighting weighting) const {
+std::vector<float> LightQuadtree::weights(Weighting weighting,
+                                          std::span<const QuadtreeCell> leaves) const {
     std::vector<double> v(samples_.size(), 0.0);
-    if (weighting == Weighting::Area) {
-        for (const auto& c : leaves_) {
-            const glm::ivec2 size = c.hi - c.lo;
-            if (linear_) {
-                for (auto g : {c.lo, c.hi}) v[size_t(find(g))] += 0.5 * size.x;
-            } else {
-                const double quarter = 0.25 * double(size.x) * double(size.y);
-                for (auto g : {c.lo, c.hi, glm::ivec2{c.hi.x, c.lo.y}, glm::ivec2{c.lo.x, c.hi.y}})
-                    v[size_t(find(g))] += quarter;
-            }
-        }
-    } else {
-        for (size_t i = 0; i < samples_.size(); ++i) {
-            const double per_axis = 1.0 / (std::ldexp(1.0, samples_[i].depth) + 1.0);
-            v[i] = weighting == Weighting::Equal ? 1.0 : (linear_ ? per_axis : per_axis * per_axis);
+    std::vector<bool> corner(samples_.size(), false);
+    for (const auto& c : leaves) {
+        const glm::ivec2 size = c.hi - c.lo;
+        const auto corners = linear_ ? std::vector{c.lo, c.hi}
+                                     : std::vector{c.lo, c.hi, glm::ivec2{c.hi.x, c.lo.y},
+                                                   glm::ivec2{c.lo.x, c.hi.y}};
+        const double share = linear_ ? 0.5 * size.x : 0.25 * double(size.x) * double(size.y);
+        for (auto g : corners) {
+            corner[size_t(find(g))] = true;
+            if (weighting == Weighting::Area) v[size_t(find(g))] += share;
         }
     }
+    if (weighting != Weighting::Area)
+        for (size_t i = 0; i < samples_.size(); ++i) {
+            const double per_axis = 1.0 / (std::ldexp(1.0, samples_[i].depth) + 1.0);
+            const double w =
+                weighting == Weighting::Equal ? 1.0 : (linear_ ? per_axis : per_axis * per_axis);
+            v[i] = corner[i] ? w : 0.0;
+        }
     double sum = 0;
     for (double x : v) sum += x;
     std::vector<float> w;

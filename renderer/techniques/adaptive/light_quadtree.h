@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -55,7 +56,10 @@ public:
         Equal,  // every sample alike
     };
     // Normalised weights of every sample, in sample order.
-    std::vector<float> weights(Weighting weighting) const;
+    std::vector<float> weights(Weighting weighting) const { return weights(weighting, leaves_); }
+    // The same over the light's part LEAVES tile (cells of this tree): samples that are no
+    // corner of theirs weigh 0.
+    std::vector<float> weights(Weighting weighting, std::span<const QuadtreeCell> leaves) const;
 
 private:
     int find(glm::ivec2 grid) const;

@@ -19,7 +19,10 @@ LitBits::LitBits()
                            {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})),
       region_program_(
           gl::buildProgram("adaptive lit region",
-                           {"passes/fullscreen.vert", "techniques/adaptive/lit_region.frag"})) {
+                           {"passes/fullscreen.vert", "techniques/adaptive/lit_region.frag"})),
+      horizon_program_(
+          gl::buildProgram("adaptive horizon tiles",
+                           {"passes/fullscreen.vert", "techniques/adaptive/horizon_tiles.frag"})) {
     sampler_ = createRawDepthSampler();
 }
 
@@ -90,6 +93,52 @@ std::optional<double> LitBits::markedPixels() const {
     return static_cast<double>(n);
 }
 
+TileMask LitBits::horizonTiles(const passes::GBuffer& gbuffer, const scene::RectLight& light,
+                               const gl::Buffer& caster_flags, const ScreenTiles& tiles) {
+    const auto bytes = GLsizeiptr(size_t(tiles.count()) * sizeof(GLuint));
+    horizon_tiles_ = gl::createBuffer("adaptive horizon tiles");
+    glNamedBufferData(horizon_tiles_.id(), bytes, nullptr, GL_DYNAMIC_READ);
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(horizon_tiles_.id(), GL_R32UI, 0, bytes, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());  // a stencil only, untouched: no test
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    const gl::Program& p = horizon_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_POSITION, gbuffer.position().id());
+    glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
+    gbuffer.bindGeometricNormal();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, caster_flags.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_HORIZON_TILES,
+                     horizon_tiles_.id());
+    gl::setUniform(p, "u_tile_side", tiles.side());
+    gl::setUniform(p, "u_tile_columns", tiles.columns());
+    gl::setUniform(p, "u_light_half", 0.5f * light.size);
+    passes::setLightFrameUniforms(p, light);
+    fullscreen_.draw();
+    glUseProgram(0);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<GLuint> flags(size_t(tiles.count()));
+    glGetNamedBufferSubData(horizon_tiles_.id(), 0, bytes, flags.data());
+    TileMask out(flags.size());
+    for (size_t t = 0; t < flags.size(); ++t) out[t] = flags[t] != 0u;
+    return out;
+}
+
+void LitBits::setTestedTiles(const ScreenTiles& tiles, std::span<const TileMask> view_tiles) {
+    std::vector<GLuint> words(size_t(tiles.count()) * size_t(planes_), 0u);
+    for (size_t k = 0; k < view_tiles.size() && k < size_t(32 * planes_); ++k)
+        for (size_t t = 0; t < size_t(tiles.count()); ++t)
+            if (view_tiles[k][t]) words[t * size_t(planes_) + k / 32] |= 1u << (k % 32);
+    tile_views_.upload(std::span<const GLuint>(words), GL_SHADER_STORAGE_BUFFER,
+                       ADAPTIVE_BINDING_LIT_TILE_VIEWS);
+    tile_side_ = tiles.side();
+    tile_columns_ = tiles.columns();
+}
+
 void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch,
                    int view_base, int count, const scene::RectLight& light,
                    const CompareSettings& s) {
@@ -100,6 +149,10 @@ void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch&
     glUseProgram(test_program_.id());
     bindMapTest(test_program_, gbuffer, batch.depth().id(), sampler_, s, light);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_TILE_VIEWS, tile_views_.id());
+    gl::setUniform(test_program_, "u_planes", planes_);
+    gl::setUniform(test_program_, "u_tile_side", tile_side_);
+    gl::setUniform(test_program_, "u_tile_columns", tile_columns_);
     gl::setUniform(test_program_, "u_view_base", view_base);
     gl::setUniform(test_program_, "u_count", std::min(count, 32));
     gl::setUniform(test_program_, "u_width", width_);
@@ -146,7 +199,8 @@ ShadowBits LitBits::read(int views, int stride) const {
 }
 
 void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                       const gl::Buffer& caster_flags, float weight_sum) {
+                       const gl::Buffer& caster_flags, const ScreenTiles& tiles,
+                       const TileWeights& weights) {
     glUseProgram(eval_program_.id());
     glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
     glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
@@ -157,7 +211,14 @@ void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::R
     gl::setUniform(eval_program_, "u_count", std::min(count, capacity()));
     gl::setUniform(eval_program_, "u_width", width_);
     gl::setUniform(eval_program_, "u_pixels", width_ * height_);
-    gl::setUniform(eval_program_, "u_weight_sum", weight_sum);
+    std::vector<std::uint32_t> tile_blocks;
+    const std::vector<std::uint32_t> blocks = weights.blocks(tile_blocks);
+    tile_sets_.upload(std::span<const std::uint32_t>(tile_blocks), GL_SHADER_STORAGE_BUFFER,
+                      ADAPTIVE_BINDING_LIT_TILE_SETS);
+    weights_.upload(std::span<const std::uint32_t>(blocks), GL_SHADER_STORAGE_BUFFER,
+                    ADAPTIVE_BINDING_LIT_WEIGHTS);
+    gl::setUniform(eval_program_, "u_tile_side", tiles.side());
+    gl::setUniform(eval_program_, "u_tile_columns", tiles.columns());
     passes::setLightFrameUniforms(eval_program_, light);
     glDisable(GL_DEPTH_TEST);
     fullscreen_.draw();

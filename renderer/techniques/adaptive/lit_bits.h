@@ -4,7 +4,9 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 
+#include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
 #include "renderer/passes/fullscreen.h"
@@ -13,6 +15,7 @@
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/scene/scene.h"
 #include "renderer/techniques/adaptive/map_compare.h"
+#include "renderer/techniques/adaptive/screen_tiles.h"
 #include "renderer/techniques/adaptive/shadow_bits.h"
 
 namespace penumbra::techniques::adaptive {
@@ -44,20 +47,28 @@ public:
                        const CompareSettings& s, float texel_size, const LitRegion& region);
     // The pixels markLitRegion() marked since begin() (blocking); none when it was not called.
     std::optional<double> markedPixels() const;
+    // The tiles of TILES that hold a pixel of GBUFFER on a caster whose tangent plane cuts
+    // LIGHT (horizon_tiles.frag; blocking).
+    TileMask horizonTiles(const passes::GBuffer& gbuffer, const scene::RectLight& light,
+                          const gl::Buffer& caster_flags, const ScreenTiles& tiles);
+    // The views test() tests in each of TILES' tiles: VIEW_TILES[k] is view k's (as many as
+    // the views to test next; views past them are tested nowhere).
+    void setTestedTiles(const ScreenTiles& tiles, std::span<const TileMask> view_tiles);
     // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's
     // layers 0..COUNT-1 (views bound at kBindingSampleViews/kBindingSampleLookups): hard tests
-    // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's.
+    // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's, in the
+    // tiles setTestedTiles() gave each view.
     void test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch, int view_base,
               int count, const scene::RectLight& light, const CompareSettings& settings);
     // Views 0..VIEWS-1 at the centre pixel of every STRIDE x STRIDE block (as shadow_bits.frag
     // samples them), slot = view (blocking).
     ShadowBits read(int views, int stride) const;
     // Adds sum_k w_k lit_k over views 0..COUNT-1 and the beauty sums into colour 0 of the bound
-    // framebuffer, as passes::ShadowAccumulate with pcf 1 (the caller sets the blending).
-    // WEIGHT_SUM: sum_k w_k added in view order in float, what a pixel that every view lights
-    // gets (lit_eval.frag).
+    // framebuffer, as passes::ShadowAccumulate with pcf 1 (the caller sets the blending), with
+    // each of TILES' tiles' weights from WEIGHTS (count views a set).
     void evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                  const gl::Buffer& caster_flags, float weight_sum);
+                  const gl::Buffer& caster_flags, const ScreenTiles& tiles,
+                  const TileWeights& weights);
     // The views whose bits begin() made room for (evaluate() reads at most these).
     int capacity() const { return 32 * planes_; }
 
@@ -67,7 +78,13 @@ private:
     passes::Fullscreen fullscreen_;
     gl::Framebuffer fbo_;  // the G-buffer's size, only a stencil: for the test passes
     gl::Buffer bits_;
+    gl::DynamicBuffer tile_views_{"adaptive lit tile views"};  // setTestedTiles()'s
+    gl::DynamicBuffer tile_sets_{"adaptive lit tile sets"};    // evaluate()'s
+    gl::DynamicBuffer weights_{"adaptive lit weights"};
+    int tile_side_ = 1, tile_columns_ = 1;  // setTestedTiles()'s
     gl::Program region_program_;
+    gl::Program horizon_program_;
+    gl::Buffer horizon_tiles_;
     gl::Texture stencil_;         // 1: the pixels test() shades
     gl::Query marked_;            // markLitRegion()'s pixels
     bool region_marked_ = false;  // markLitRegion() since begin()

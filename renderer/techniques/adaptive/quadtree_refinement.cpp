@@ -5,6 +5,7 @@
 #include "renderer/techniques/adaptive/adaptive.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,12 +18,11 @@ bool Adaptive::fitsMapBudget(const adaptive::LightQuadtree& tree,
     return int(tree.samples().size()) + tree.newSamples(cell) <= max_maps_;
 }
 
-// Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
-// order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
-std::vector<adaptive::QuadtreeCell> Adaptive::splitByError(
-    adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
-    const std::vector<adaptive::CompareResult>& counts, double shadowed,
-    adaptive::ErrorBudget& budget, bool& budget_hit) const {
+// Metric "error": each cell's estimated error from its worse diagonal's COUNTS.
+std::vector<double> Adaptive::cellErrors(const adaptive::LightQuadtree& tree,
+                                         const std::vector<adaptive::QuadtreeCell>& cells,
+                                         const std::vector<adaptive::CompareResult>& counts,
+                                         double shadowed) {
     std::vector<double> errors;
     for (size_t i = 0, q = 0; i < cells.size(); ++i) {
         double disagreeing = 0;  // the worse diagonal
@@ -31,6 +31,16 @@ std::vector<adaptive::QuadtreeCell> Adaptive::splitByError(
         const double share = std::ldexp(1.0, -(tree.linear() ? 1 : 2) * cells[i].depth);
         errors.push_back(adaptive::cellError(share, disagreeing, shadowed));
     }
+    return errors;
+}
+
+// Metric "error": splits the CELLS whose estimated error (from COUNTS, in comparisons()
+// order, over SHADOWED pixels) BUDGET chooses, within the map budget; returns the children.
+std::vector<adaptive::QuadtreeCell> Adaptive::splitByError(
+    adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
+    const std::vector<adaptive::CompareResult>& counts, double shadowed,
+    adaptive::ErrorBudget& budget, bool& budget_hit) const {
+    const std::vector<double> errors = cellErrors(tree, cells, counts, shadowed);
     std::vector<adaptive::QuadtreeCell> next;
     for (size_t i : budget.choose(errors)) {
         if (!fitsMapBudget(tree, cells[i])) {
@@ -40,6 +50,48 @@ std::vector<adaptive::QuadtreeCell> Adaptive::splitByError(
         }
         for (const auto& child : tree.split(cells[i])) next.push_back(child);
     }
+    return next;
+}
+
+// The bits path's splits, each in the tiles around where its cell disagreed.
+std::vector<adaptive::QuadtreeCell> Adaptive::splitInTiles(
+    adaptive::LightQuadtree& tree, const std::vector<adaptive::QuadtreeCell>& cells,
+    const std::vector<size_t>& chosen, const std::vector<std::vector<std::uint32_t>>& where,
+    const std::function<void(size_t)>& refused, bool& budget_hit) {
+    std::vector<adaptive::QuadtreeCell> next;
+    std::vector<adaptive::TileMask> next_tiles;
+    std::vector<bool> split(cells.size(), false);
+    for (size_t i : chosen) {
+        const adaptive::TileMask& live = cell_tiles_[i];
+        adaptive::TileMask tiles = live;
+        if (tiles_->count() > 1) {
+            tiles = tiles_->around(where[i], tile_of_, live);
+            for (size_t t = 0; t < tiles.size(); ++t) tiles[t] |= horizon_tiles_[t] & live[t];
+        }
+        const bool somewhere = std::find(tiles.begin(), tiles.end(), 1) != tiles.end();
+        if (!somewhere || !fitsMapBudget(tree, cells[i])) {
+            budget_hit = budget_hit || somewhere;  // the map budget refused it
+            refused(i);
+            continue;
+        }
+        split[i] = true;
+        adaptive::TileMask rest = live;  // where the cell stays a leaf
+        for (size_t t = 0; t < rest.size(); ++t) rest[t] &= std::uint8_t(!tiles[t]);
+        tiled_leaves_.push_back({cells[i], std::move(rest)});
+        for (const auto& child : tree.split(cells[i])) {
+            next.push_back(child);
+            next_tiles.push_back(tiles);
+            view_tiles_.resize(tree.samples().size(), adaptive::TileMask(tiles.size(), 0));
+            for (auto [a, b] : tree.comparisons(child))  // its corners are tested there
+                for (size_t t = 0; t < tiles.size(); ++t) {
+                    view_tiles_[size_t(a)][t] |= tiles[t];
+                    view_tiles_[size_t(b)][t] |= tiles[t];
+                }
+        }
+    }
+    for (size_t i = 0; i < cells.size(); ++i)
+        if (!split[i]) tiled_leaves_.push_back({cells[i], cell_tiles_[i]});
+    cell_tiles_ = std::move(next_tiles);
     return next;
 }
 
@@ -107,6 +159,8 @@ void Adaptive::renderNewMaps(frame::FrameContext& ctx, const adaptive::LightQuad
     if (first == n) return;
     if (litPath()) {
         views_buffer_.upload(views_);
+        view_tiles_.resize(size_t(n), tiles_->all());  // the root's corners: everywhere
+        lit_bits_->setTestedTiles(*tiles_, view_tiles_);
         ctx.pass("adaptive_maps[" + std::to_string(level) + "]",
                  [&] { renderAndTest(ctx, first, n); });
         return;

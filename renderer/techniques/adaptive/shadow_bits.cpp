@@ -46,14 +46,15 @@ std::vector<std::uint32_t> ShadowBits::disagreeing(
 }
 
 Disagreements ShadowBits::disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
-                                        bool where) const {
+                                        bool where, std::span<const TileMask> masks,
+                                        std::span<const std::uint32_t> tile_of) const {
     size_t pairs = 0;
     for (const auto& group : groups) pairs += group.size();
     // Contiguous chunks of the active pixels on threads of their own, each found as below; the
     // counts add up and the pixel lists join in chunk order (still ascending).
     std::vector<Disagreements> part(parallelThreads());
     const size_t chunks = parallelChunks(active.size(), kGrain, [&](size_t c, size_t b, size_t e) {
-        part[c] = disagreementsIn(groups, pairs, where, b, e);
+        part[c] = disagreementsIn(groups, pairs, where, masks, tile_of, b, e);
     });
     if (chunks == 1) return std::move(part[0]);
     Disagreements out;
@@ -70,7 +71,8 @@ Disagreements ShadowBits::disagreements(std::span<const std::vector<std::pair<in
 }
 
 Disagreements ShadowBits::disagreementsIn(std::span<const std::vector<std::pair<int, int>>> groups,
-                                          size_t pairs, bool where, size_t begin,
+                                          size_t pairs, bool where, std::span<const TileMask> masks,
+                                          std::span<const std::uint32_t> tile_of, size_t begin,
                                           size_t end) const {
     // Blocks of active pixels, their words packed word-major: the loops over a block's pixels
     // below are plain array arithmetic the compiler vectorises, on data that stays in cache.
@@ -79,7 +81,7 @@ Disagreements ShadowBits::disagreementsIn(std::span<const std::vector<std::pair<
     out.where.resize(groups.size());
     out.pairs.assign(pairs, 0);
     std::vector<std::uint32_t> packed(static_cast<size_t>(words) * kBlock);
-    std::vector<std::uint8_t> any(kBlock), anywhere(kBlock);
+    std::vector<std::uint8_t> any(kBlock), anywhere(kBlock), live(kBlock, 1);
     for (size_t first = begin; first < end; first += kBlock) {
         const size_t n = std::min(kBlock, end - first);
         for (size_t k = 0; k < size_t(words); ++k)
@@ -89,13 +91,15 @@ Disagreements ShadowBits::disagreementsIn(std::span<const std::vector<std::pair<
         size_t q = 0;  // the pair's index in out.pairs
         for (size_t g = 0; g < groups.size(); ++g) {
             std::fill_n(any.begin(), n, std::uint8_t{0});
+            if (!masks.empty())  // the group's tiles: elsewhere its corners' bits are not set
+                for (size_t j = 0; j < n; ++j) live[j] = masks[g][tile_of[active[first + j]]];
             for (auto [a, b] : groups[g]) {
                 const std::uint32_t* wa = &packed[size_t(a >> 5) * kBlock];
                 const std::uint32_t* wb = &packed[size_t(b >> 5) * kBlock];
                 const unsigned sa = unsigned(a & 31), sb = unsigned(b & 31);
                 size_t count = 0;
                 for (size_t j = 0; j < n; ++j) {
-                    const std::uint32_t d = ((wa[j] >> sa) ^ (wb[j] >> sb)) & 1u;
+                    const std::uint32_t d = ((wa[j] >> sa) ^ (wb[j] >> sb)) & live[j];
                     count += d;
                     any[j] |= std::uint8_t(d);
                 }

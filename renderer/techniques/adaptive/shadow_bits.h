@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/techniques/adaptive/screen_tiles.h"
+
 namespace penumbra::techniques::adaptive {
 
 // What one pass over the shadowed pixels finds for groups of slot pairs (a cell's diagonals).
@@ -38,14 +40,18 @@ struct ShadowBits {
     std::vector<std::uint32_t> disagreeing(std::span<const std::pair<int, int>> pairs) const;
     // For each group of pairs of slots, the pixels where any of its pairs disagrees (left
     // empty without WHERE), and each pair's count, in one pass over the active pixels (the
-    // refinement's per-level cost), the active pixels split between threads.
+    // refinement's per-level cost), the active pixels split between threads. With MASKS (one
+    // per group), a group counts only the pixels of its tiles (TILE_OF: each pixel's tile).
     Disagreements disagreements(std::span<const std::vector<std::pair<int, int>>> groups,
-                                bool where = true) const;
+                                bool where = true, std::span<const TileMask> masks = {},
+                                std::span<const std::uint32_t> tile_of = {}) const;
 
 private:
     // The same over active[BEGIN, END), for PAIRS pairs in all.
     Disagreements disagreementsIn(std::span<const std::vector<std::pair<int, int>>> groups,
-                                  size_t pairs, bool where, size_t begin, size_t end) const;
+                                  size_t pairs, bool where, std::span<const TileMask> masks,
+                                  std::span<const std::uint32_t> tile_of, size_t begin,
+                                  size_t end) const;
 };
 
 }  // namespace penumbra::techniques::adaptive
