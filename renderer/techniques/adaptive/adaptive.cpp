@@ -183,7 +183,10 @@ void Adaptive::renderLitRegion(frame::FrameContext& ctx) {
     if (!region_) return;
     const scene::RectLight& light = ctx.currentLight();
     LitRegion region;
-    region.window = passes::occluderWindow(light, ctx.gpu.casterBoxes());
+    // The casters' own window: lit_region.frag's search scales each axis by its texel, so the
+    // light's aspect is not needed (stretched to a 1500:1 strip light's, the casters fell
+    // between the texels and nothing was marked: no shadow at all).
+    region.window = passes::windowOf(light, ctx.gpu.casterBoxes());
     if (region.window.empty()) return;  // no caster: the tests find none either
     // The tests' normal offset scales with view 0's texel size; the centre's is nearly the same.
     const float texel =
