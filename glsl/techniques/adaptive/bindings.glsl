@@ -17,6 +17,7 @@
 #define ADAPTIVE_BINDING_LIT_TILE_SETS 10  // SSBO of uint: each screen tile's weights' block
 #define ADAPTIVE_BINDING_LIT_WEIGHTS 11    // SSBO of uint: the blocks (TileWeights::blocks)
 #define ADAPTIVE_BINDING_LIT_HORIZON_TILES 12  // SSBO of uint: horizon_tiles.frag's flags
+#define ADAPTIVE_BINDING_LIT_TILE_LIST 13  // SSBO of uint: tile_quads.vert's tiles
 #define ADAPTIVE_UNIT_LIT_REGION 3  // the casters' min/max distance pyramid from the light's centre
 
 #endif

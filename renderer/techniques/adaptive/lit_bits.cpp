@@ -14,6 +14,9 @@ namespace penumbra::techniques::adaptive {
 LitBits::LitBits()
     : test_program_(gl::buildProgram(
           "adaptive lit bits", {"passes/fullscreen.vert", "techniques/adaptive/lit_bits.frag"})),
+      tile_test_program_(gl::buildProgram(
+          "adaptive lit bits in tiles",
+          {"techniques/adaptive/tile_quads.vert", "techniques/adaptive/lit_bits.frag"})),
       eval_program_(
           gl::buildProgram("adaptive lit evaluation",
                            {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})),
@@ -137,30 +140,56 @@ void LitBits::setTestedTiles(const ScreenTiles& tiles, std::span<const TileMask>
                        ADAPTIVE_BINDING_LIT_TILE_VIEWS);
     tile_side_ = tiles.side();
     tile_columns_ = tiles.columns();
+    tile_count_ = tiles.count();
+    tiles_of_view_.assign(view_tiles.size(), {});
+    for (size_t k = 0; k < view_tiles.size(); ++k)
+        for (size_t t = 0; t < view_tiles[k].size(); ++t)
+            if (view_tiles[k][t]) tiles_of_view_[k].push_back(std::uint32_t(t));
 }
 
 void LitBits::test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch,
                    int view_base, int count, const scene::RectLight& light,
                    const CompareSettings& s) {
+    // With several tiles, only the quads of those where some view of the batch is tested.
+    std::vector<std::uint32_t> list;
+    if (tile_count_ > 1) {
+        std::vector<bool> any(size_t(tile_count_), false);
+        for (int k = view_base; k < view_base + count && k < int(tiles_of_view_.size()); ++k)
+            for (std::uint32_t t : tiles_of_view_[size_t(k)]) any[t] = true;
+        for (size_t t = 0; t < any.size(); ++t)
+            if (any[t]) list.push_back(std::uint32_t(t));
+        if (list.empty()) return;
+    }
+    const gl::Program& program = tile_count_ > 1 ? tile_test_program_ : test_program_;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glUseProgram(test_program_.id());
-    bindMapTest(test_program_, gbuffer, batch.depth().id(), sampler_, s, light);
+    glUseProgram(program.id());
+    bindMapTest(program, gbuffer, batch.depth().id(), sampler_, s, light);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_TILE_VIEWS, tile_views_.id());
-    gl::setUniform(test_program_, "u_planes", planes_);
-    gl::setUniform(test_program_, "u_tile_side", tile_side_);
-    gl::setUniform(test_program_, "u_tile_columns", tile_columns_);
-    gl::setUniform(test_program_, "u_view_base", view_base);
-    gl::setUniform(test_program_, "u_count", std::min(count, 32));
-    gl::setUniform(test_program_, "u_width", width_);
-    gl::setUniform(test_program_, "u_pixels", width_ * height_);
+    gl::setUniform(program, "u_planes", planes_);
+    gl::setUniform(program, "u_tile_side", tile_side_);
+    gl::setUniform(program, "u_tile_columns", tile_columns_);
+    gl::setUniform(program, "u_view_base", view_base);
+    gl::setUniform(program, "u_count", std::min(count, 32));
+    gl::setUniform(program, "u_width", width_);
+    gl::setUniform(program, "u_pixels", width_ * height_);
     glEnable(GL_STENCIL_TEST);  // only the pixels markLitRegion() left
     glStencilFunc(GL_EQUAL, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    fullscreen_.draw();
+    if (list.empty()) {
+        fullscreen_.draw();
+    } else {
+        gl::setUniform(program, "u_viewport", glm::vec2(float(width_), float(height_)));
+        tile_list_.upload(std::span<const std::uint32_t>(list), GL_SHADER_STORAGE_BUFFER,
+                          ADAPTIVE_BINDING_LIT_TILE_LIST);
+        if (!quads_vao_) quads_vao_ = gl::createVertexArray("adaptive lit tile quads");
+        glBindVertexArray(quads_vao_.id());
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * list.size()));
+        glBindVertexArray(0);
+    }
     glDisable(GL_STENCIL_TEST);
     // The next batch's test ORs into the same words; the readback and evaluation read them.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

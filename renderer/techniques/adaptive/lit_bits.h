@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
@@ -57,7 +58,7 @@ public:
     // Sets the bits of views VIEW_BASE..VIEW_BASE+COUNT-1 (COUNT at most 32), held in BATCH's
     // layers 0..COUNT-1 (views bound at kBindingSampleViews/kBindingSampleLookups): hard tests
     // with SETTINGS' offset and bias, the normal offset from view 0 as the evaluation's, in the
-    // tiles setTestedTiles() gave each view.
+    // tiles setTestedTiles() gave each view (drawn as those tiles' quads when there are several).
     void test(const passes::GBuffer& gbuffer, const passes::ShadowMapBatch& batch, int view_base,
               int count, const scene::RectLight& light, const CompareSettings& settings);
     // Views 0..VIEWS-1 at the centre pixel of every STRIDE x STRIDE block (as shadow_bits.frag
@@ -74,14 +75,18 @@ public:
 
 private:
     gl::Program test_program_;
+    gl::Program tile_test_program_;  // the same over tile_quads.vert's tiles
     gl::Program eval_program_;
     passes::Fullscreen fullscreen_;
     gl::Framebuffer fbo_;  // the G-buffer's size, only a stencil: for the test passes
     gl::Buffer bits_;
     gl::DynamicBuffer tile_views_{"adaptive lit tile views"};  // setTestedTiles()'s
-    gl::DynamicBuffer tile_sets_{"adaptive lit tile sets"};    // evaluate()'s
+    gl::DynamicBuffer tile_list_{"adaptive lit tile list"};    // test()'s batch's tiles
+    std::vector<std::vector<std::uint32_t>> tiles_of_view_;    // setTestedTiles()'s, per view
+    gl::VertexArray quads_vao_;
+    gl::DynamicBuffer tile_sets_{"adaptive lit tile sets"};  // evaluate()'s
     gl::DynamicBuffer weights_{"adaptive lit weights"};
-    int tile_side_ = 1, tile_columns_ = 1;  // setTestedTiles()'s
+    int tile_side_ = 1, tile_columns_ = 1, tile_count_ = 1;  // setTestedTiles()'s
     gl::Program region_program_;
     gl::Program horizon_program_;
     gl::Buffer horizon_tiles_;
