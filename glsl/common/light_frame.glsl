@@ -9,4 +9,9 @@ uniform vec3 u_light_right;
 uniform vec3 u_light_up;
 uniform vec3 u_light_forward;
 
+// V in the light's axes (right, up, forward), no centre subtracted.
+vec3 inLightAxes(vec3 v) {
+    return vec3(dot(v, u_light_right), dot(v, u_light_up), dot(v, u_light_forward));
+}
+
 #endif

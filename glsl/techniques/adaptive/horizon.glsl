@@ -4,11 +4,6 @@
 #ifndef PENUMBRA_ADAPTIVE_HORIZON_GLSL
 #define PENUMBRA_ADAPTIVE_HORIZON_GLSL
 
-// V in the light's axes (no centre subtracted: lit_eval.frag's and the lookups' frame).
-vec3 inLightAxes(vec3 v) {
-    return vec3(dot(v, u_light_right), dot(v, u_light_up), dot(v, u_light_forward));
-}
-
 // Whether the plane through Q with normal G (in the light's axes) cuts the light of half size
 // HALF_SIZE: some of its points lie above the plane, some below.
 bool tangentCutsLight(vec3 g, vec3 q, vec2 half_size) {

@@ -72,7 +72,7 @@ void main() {
     // The evaluation's normal offset: from the light's first view (all are nearly the same).
     bool casts = objectCasts(texelFetch(u_id, pixel, 0).r);
     vec3 p = receiverTestPoint(pos.xyz, n, casts, u_normal_offset, u_views[0].params.y);
-    vec3 q = vec3(dot(p, u_light_right), dot(p, u_light_up), dot(p, u_light_forward));
+    vec3 q = inLightAxes(p);
     uvec2 bits = uvec2(0u);  // the batch spans at most two words
     for (int i = 0; i < u_count; ++i) {
         uint bit = 1u << uint((shift + i) & 31);

@@ -44,12 +44,11 @@ void main() {
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) discard;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-    vec3 q0 =
-        vec3(dot(pos.xyz, u_light_right), dot(pos.xyz, u_light_up), dot(pos.xyz, u_light_forward));
-    vec3 nl = vec3(dot(n, u_light_right), dot(n, u_light_up), dot(n, u_light_forward));
+    vec3 q0 = inLightAxes(pos.xyz);
+    vec3 nl = inLightAxes(n);
     bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
     vec3 g = geometricNormal(pix);
-    vec3 gfl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
+    vec3 gfl = inLightAxes(g);
     int at = pix.y * u_width + pix.x;
     ivec2 tile = pix / u_tile_side;
     int block = int(u_tile_blocks[tile.y * u_tile_columns + tile.x]);

@@ -98,12 +98,9 @@ std::optional<double> LitBits::markedPixels() const {
 
 TileMask LitBits::horizonTiles(const passes::GBuffer& gbuffer, const scene::RectLight& light,
                                const gl::Buffer& caster_flags, const ScreenTiles& tiles) {
-    const auto bytes = GLsizeiptr(size_t(tiles.count()) * sizeof(GLuint));
-    horizon_tiles_ = gl::createBuffer("adaptive horizon tiles");
-    glNamedBufferData(horizon_tiles_.id(), bytes, nullptr, GL_DYNAMIC_READ);
-    const GLuint zero = 0;
-    glClearNamedBufferSubData(horizon_tiles_.id(), GL_R32UI, 0, bytes, GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
+    std::vector<GLuint> flags(size_t(tiles.count()), 0u);  // cleared, and bound
+    horizon_tiles_.upload(std::span<const GLuint>(flags), GL_SHADER_STORAGE_BUFFER,
+                          ADAPTIVE_BINDING_LIT_HORIZON_TILES);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());  // a stencil only, untouched: no test
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -115,8 +112,6 @@ TileMask LitBits::horizonTiles(const passes::GBuffer& gbuffer, const scene::Rect
     glBindTextureUnit(ADAPTIVE_UNIT_COMPARE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, caster_flags.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_HORIZON_TILES,
-                     horizon_tiles_.id());
     gl::setUniform(p, "u_tile_side", tiles.side());
     gl::setUniform(p, "u_tile_columns", tiles.columns());
     gl::setUniform(p, "u_light_half", 0.5f * light.size);
@@ -124,8 +119,8 @@ TileMask LitBits::horizonTiles(const passes::GBuffer& gbuffer, const scene::Rect
     fullscreen_.draw();
     glUseProgram(0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<GLuint> flags(size_t(tiles.count()));
-    glGetNamedBufferSubData(horizon_tiles_.id(), 0, bytes, flags.data());
+    glGetNamedBufferSubData(horizon_tiles_.id(), 0, GLsizeiptr(flags.size() * sizeof(GLuint)),
+                            flags.data());
     TileMask out(flags.size());
     for (size_t t = 0; t < flags.size(); ++t) out[t] = flags[t] != 0u;
     return out;

@@ -89,11 +89,11 @@ private:
     int tile_side_ = 1, tile_columns_ = 1, tile_count_ = 1;  // setTestedTiles()'s
     gl::Program region_program_;
     gl::Program horizon_program_;
-    gl::Buffer horizon_tiles_;
-    gl::Texture stencil_;         // 1: the pixels test() shades
-    gl::Query marked_;            // markLitRegion()'s pixels
-    bool region_marked_ = false;  // markLitRegion() since begin()
-    size_t capacity_ = 0;         // words in bits_
+    gl::DynamicBuffer horizon_tiles_{"adaptive horizon tiles"};  // horizonTiles()'s
+    gl::Texture stencil_;                                        // 1: the pixels test() shades
+    gl::Query marked_;                                           // markLitRegion()'s pixels
+    bool region_marked_ = false;                                 // markLitRegion() since begin()
+    size_t capacity_ = 0;                                        // words in bits_
     int width_ = 0, height_ = 0, planes_ = 0;
     unsigned sampler_ = 0;  // nearest, no depth compare: raw depths of the maps
 };
