@@ -90,7 +90,8 @@ LightWindow windowOf(const scene::RectLight& light, Boxes boxes) {
 LightWindow occluderWindow(const scene::RectLight& light, Boxes casters) {
     LightWindow w = windowOf(light, casters);
     if (w.empty()) return w;
-    const float aspect = light.size.x / light.size.y;
+    const float aspect =
+        std::clamp(light.size.x / light.size.y, 1.0f / kMaxTexelAspect, kMaxTexelAspect);
     const glm::vec2 centre = w.lo + 0.5f * w.size;
     if (w.size.x < w.size.y * aspect)
         w.size.x = w.size.y * aspect;

@@ -1,6 +1,6 @@
 // Light-centred views: the window from a rect light's centre that bounds a box, and the
-// occluder-map window (axis-aligned with the light, texels of its aspect ratio) that the light
-// depth maps of `ssm`, `bitmask` and `css` are rendered through.
+// occluder-map window (axis-aligned with the light, texels of its aspect ratio up to 2:1) that the
+// light depth maps of `ssm` and `bitmask` are rendered through.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -35,8 +35,15 @@ std::vector<glm::vec3> visibleVertices(Boxes boxes, const scene::RectLight& ligh
 // The window that bounds BOXES seen from the light's centre (empty when none lies in front).
 LightWindow windowOf(const scene::RectLight& light, Boxes boxes);
 
+// The most a texel of the occluder map is stretched toward a long light's aspect ratio. Stretched
+// all the way, a 1.5 x 0.015 light's casters fell between the texels of a 256 map (100:1): the
+// shadows of tests/data/gl/adaptive_two_shadows.json under it came out 0.27 (`ssm`) and 0.30
+// (`bitmask`) off `exact`, 0.013 with texels of 2:1, 0.012 and 0.013 with square ones.
+inline constexpr float kMaxTexelAspect = 2.0f;
+
 // The occluder-map window: the casters' window grown along one axis so that its aspect ratio,
-// and so that of every texel of a square map, is the light's.
+// and so that of every texel of a square map, is the light's, up to kMaxTexelAspect (or 1 /
+// it): a light of at most 2:1 is searched in square areas of texels.
 LightWindow occluderWindow(const scene::RectLight& light, Boxes casters);
 
 }  // namespace penumbra::passes

@@ -105,3 +105,30 @@ TEST(LightWindows, ACasterAcrossTheLightsPlaneSetsNearWhereTheWidestViewMeetsIt)
     for (const glm::vec3& p : passes::visibleVertices(boxes, light, light.position))
         EXPECT_LE(std::max(std::fabs(p.x), std::fabs(p.y)), passes::kMaxViewTan * p.z + 1e-4f);
 }
+
+TEST(LightWindows, AnOccluderMapsTexelsTakeTheLightsAspectUpToTwoToOne) {
+    // A light at (0, 3, 0) looking straight down over one 1 m cube: its casters' window is
+    // square. The occluder window grows it to the light's aspect, so that a square map's texels
+    // have it, but at most 2:1: at 100:1 (a 1.5 x 0.015 tube) the cube filled a hundredth of
+    // the map's width and its shadows came out 0.28 off `exact` (tests/data/gl/strip_light.json).
+    scene::RectLight light;
+    light.position = {0, 3, 0};
+    light.target = {0, 0, 0};
+    light.up = {0, 0, -1};
+    const std::vector<Bounds> boxes = {box({-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f})};
+    const passes::LightWindow own = passes::windowOf(light, boxes);
+    ASSERT_NEAR(own.size.x, own.size.y, 1e-5f);
+    const auto aspect = [&](glm::vec2 size) {
+        light.size = size;
+        const passes::LightWindow w = passes::occluderWindow(light, boxes);
+        EXPECT_GE(w.size.x, own.size.x - 1e-5f);  // it holds the casters' window
+        EXPECT_GE(w.size.y, own.size.y - 1e-5f);
+        EXPECT_EQ(w.near, own.near);
+        return w.size.x / w.size.y;
+    };
+    EXPECT_NEAR(aspect({0.5f, 0.5f}), 1.0f, 1e-5f);
+    EXPECT_NEAR(aspect({1.5f, 1.0f}), 1.5f, 1e-5f);
+    EXPECT_NEAR(aspect({1.0f, 1.5f}), 1.0f / 1.5f, 1e-5f);
+    EXPECT_NEAR(aspect({1.5f, 0.015f}), passes::kMaxTexelAspect, 1e-5f);
+    EXPECT_NEAR(aspect({0.001f, 1.5f}), 1.0f / passes::kMaxTexelAspect, 1e-5f);
+}
