@@ -12,6 +12,12 @@ float horizonRamp(float t) {
 // With the light as the unit square (x, y in [0, 1]) and the height above the plane
 // h0 + hx x + hy y, the area of the square where the height is >= 0.
 float horizonArea(float h0, float hx, float hy) {
+    // Wholly above or below at its corners: nothing to integrate. Not left to the ramp below: a
+    // plane nearly parallel to the light (a slope of 1e-7, a float rounding of a normal) put a
+    // near 1e7, where R(a + b) - R(a) has no digit left (float's spacing there is 1), and a lit
+    // face came out 0 or clamped from 2 (LightHorizonGL.ThePlaneNearlyParallel...).
+    if (h0 + min(hx, 0.0) + min(hy, 0.0) >= 0.0) return 1.0;
+    if (h0 + max(hx, 0.0) + max(hy, 0.0) <= 0.0) return 0.0;
     // Integrate along the axis of the larger slope: the covered length across it is
     // clamp(a + b y, 0, 1) with |b| <= 1, whose integral over y in [0, 1] is
     // (R(a + b) - R(a)) / b, R = horizonRamp.
