@@ -40,7 +40,12 @@ glm::mat4 LightWindow::viewProj(const scene::RectLight& light) const {
     const glm::vec3 f = light.forward();
     const glm::mat4 view = glm::lookAt(light.position, light.position + f, light.upAxis());
     const glm::vec2 hi = lo + size;
-    return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far) * view;
+    // The clip planes lie 0.1 % outside [near, far]: windowOf puts the near plane at the nearest
+    // caster's face, and rounding clipped that face away at some scales (box_floating scaled
+    // by 26 or 30: `css`'s map held the box's bottom under its top, which shadowed itself).
+    // The maps' depths are linear from near (light_depth.vert), so only the clipping moves.
+    const float n = near * (1.0f - 1e-3f), clip_far = far * (1.0f + 1e-3f);
+    return glm::frustum(lo.x * n, hi.x * n, lo.y * n, hi.y * n, n, clip_far) * view;
 }
 
 std::vector<glm::vec3> visibleVertices(Boxes boxes, const scene::RectLight& light,

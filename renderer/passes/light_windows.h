@@ -19,6 +19,7 @@ struct LightWindow {
     glm::vec2 lo{0.0f}, size{0.0f};
     float near = 0.0f, far = 0.0f;
     bool empty() const { return !(size.x > 0.0f && size.y > 0.0f && far > near); }
+    // The projection through the window, clipping a little outside [near, far].
     glm::mat4 viewProj(const scene::RectLight& light) const;
 };
 
