@@ -35,7 +35,8 @@ constexpr std::array kExactParams = {
     floatParam(kRayOffset, 1e-5, 0.0, 1e-2,
                "a shadow ray skips this much of its start and, toward light above the "
                "point's facet, starts this far off it; a share of the casters' bounding "
-               "diagonal (skips the point's own surface; no shadow-map bias)"),
+               "diagonal, at least 8 float steps of the point's coordinates (skips the "
+               "point's own surface; no shadow-map bias)"),
     intParam(kEnvSamples, 256, 2, 4096,
              "environment: shadow rays per pixel, half toward directions drawn by the map's "
              "luminance, half by the cosine, combined by multiple importance sampling"),

@@ -53,6 +53,9 @@ struct PixelTracer {
     // from a position a rounding error behind it; else P.
     static glm::vec3 origin(const glm::vec3& p, const glm::vec3& ng, const glm::vec3& d,
                             float near);
+    // The distance a ray from P skips and is lifted by: TNEAR (the casters' share), at least
+    // what P's coordinates are rounded to far from the origin.
+    static float nearFrom(const glm::vec3& p, float tnear);
 };
 
 }  // namespace penumbra::techniques::exact
