@@ -5,11 +5,10 @@
 
 namespace penumbra::passes {
 
-Bounds Bounds::transformed(const glm::mat4& m) const {
-    Bounds out;
-    if (empty()) return out;
-    for (int i = 0; i < 8; ++i) out.extend(glm::vec3(m * glm::vec4(corner(i), 1.0f)));
-    return out;
+WorldBox::WorldBox(const Bounds& model, const glm::mat4& transform) : valid(!model.empty()) {
+    if (!valid) return;
+    for (int i = 0; i < 8; ++i)
+        corners[static_cast<size_t>(i)] = glm::vec3(transform * glm::vec4(model.corner(i), 1.0f));
 }
 
 namespace {
@@ -123,9 +122,9 @@ void GpuScene::update(const scene::Scene& scene) {
         g.shadow = o.shadow;
         g.id = static_cast<int>(i);
         g.mirrored = glm::determinant(glm::mat3(o.transform)) < 0.0f;
-        g.world_bounds = g.model->bounds.transformed(o.transform);
-        scene_boxes_.push_back(g.world_bounds);
-        if (scene::castsShadow(o.shadow)) caster_boxes_.push_back(g.world_bounds);
+        g.world_box = WorldBox(g.model->bounds, o.transform);
+        scene_boxes_.push_back(g.world_box);
+        if (scene::castsShadow(o.shadow)) caster_boxes_.push_back(g.world_box);
         objects_.push_back(g);
     }
 }

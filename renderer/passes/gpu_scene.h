@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <memory>
 #include <span>
 #include <unordered_map>
@@ -30,12 +31,26 @@ struct Bounds {
     glm::vec3 corner(int i) const {
         return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
     }
-    Bounds transformed(const glm::mat4& m) const;
+};
+
+// A model-space box carried into the world by an object's transform: the 8 corners of a
+// parallelepiped, numbered as Bounds::corner (so each still lies on the faces of its bits). Views
+// are fitted to these, not to the axis-aligned boxes around them: a floor turned about two axes
+// (scripts/scale-scenes --rotate) has an axis-aligned box as deep as it is wide, whose corners
+// set `css`'s depth range and every light-centred map's near plane where nothing is.
+struct WorldBox {
+    std::array<glm::vec3, 8> corners{};
+    bool valid = false;
+    WorldBox() = default;
+    // Implicit from an axis-aligned world box (the identity transform).
+    WorldBox(const Bounds& model, const glm::mat4& transform = glm::mat4(1.0f));
+    bool empty() const { return !valid; }
+    const glm::vec3& corner(int i) const { return corners[static_cast<size_t>(i)]; }
 };
 
 // World boxes, one per object: views are fitted to these rather than to their union, whose
 // corners can lie where no object does (behind a tilted light's plane).
-using Boxes = std::span<const Bounds>;
+using Boxes = std::span<const WorldBox>;
 
 struct GpuDraw {
     GLsizei count = 0;   // indices
@@ -60,7 +75,7 @@ struct GpuObject {
     const GpuModel* model = nullptr;
     glm::mat4 transform{1.0f};
     scene::ShadowRole shadow = scene::ShadowRole::Both;
-    Bounds world_bounds;
+    WorldBox world_box;
     int id = 0;             // index in Scene::objects
     bool mirrored = false;  // the transform's determinant is negative: front faces turn clockwise
 };
@@ -94,7 +109,7 @@ public:
 private:
     std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;
     std::vector<GpuObject> objects_;
-    std::vector<Bounds> caster_boxes_, scene_boxes_;
+    std::vector<WorldBox> caster_boxes_, scene_boxes_;
     gl::Buffer caster_flags_;
 };
 

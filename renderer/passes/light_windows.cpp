@@ -55,7 +55,7 @@ std::vector<glm::vec3> visibleVertices(Boxes boxes, const scene::RectLight& ligh
     const glm::vec3 sides[4] = {{1, 0, k}, {-1, 0, k}, {0, 1, k}, {0, -1, k}};
     std::vector<glm::vec3> out;
     std::vector<Vertex> v;
-    for (const Bounds& b : boxes) {
+    for (const WorldBox& b : boxes) {
         if (b.empty()) continue;
         v.clear();
         bool inside = true;

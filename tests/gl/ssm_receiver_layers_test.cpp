@@ -37,9 +37,9 @@ Built build(const penumbra::scene::Scene& s, Build how, int layers, int size = 2
     penumbra::testing::glInfo();
     const GpuScene gpu(s);
     const auto& light = s.lights.at(0);
-    std::vector<penumbra::passes::Bounds> receivers;
+    std::vector<penumbra::passes::WorldBox> receivers;
     for (const auto& o : gpu.objects())
-        if (penumbra::scene::receivesShadow(o.shadow)) receivers.push_back(o.world_bounds);
+        if (penumbra::scene::receivesShadow(o.shadow)) receivers.push_back(o.world_box);
     const auto occ =
         ssm::withNearMargin(penumbra::passes::occluderWindow(light, gpu.casterBoxes()));
     const auto soft = ssm::softShadowWindow(light, occ, receivers);

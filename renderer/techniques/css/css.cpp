@@ -106,7 +106,7 @@ private:
         for (const passes::GpuObject& o : gpu.objects()) {
             float z = 1e30f;
             for (int i = 0; i < 8; ++i)
-                z = std::min(z, glm::dot(o.world_bounds.corner(i) - light.position, forward));
+                z = std::min(z, glm::dot(o.world_box.corner(i) - light.position, forward));
             if (nearest.size() <= size_t(o.id)) nearest.resize(size_t(o.id) + 1, 0.0f);
             nearest[size_t(o.id)] = (z - range.near) / (range.far - range.near);
         }

@@ -136,9 +136,9 @@ void Ssm::renderOccluderMap(const passes::GpuScene& scene, const scene::RectLigh
 
 void Ssm::render(frame::FrameContext& ctx) {
     const scene::RectLight& light = ctx.currentLight();
-    std::vector<passes::Bounds> receivers;
+    std::vector<passes::WorldBox> receivers;
     for (const auto& o : ctx.gpu.objects())
-        if (receives(o.shadow)) receivers.push_back(o.world_bounds);
+        if (receives(o.shadow)) receivers.push_back(o.world_box);
     const LightWindow occ =
         ssm::withNearMargin(passes::occluderWindow(light, ctx.gpu.casterBoxes()));
     const LightWindow soft = ssm::softShadowWindow(light, occ, receivers);

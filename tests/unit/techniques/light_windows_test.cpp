@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/passes/light_windows.h"
 #include "renderer/passes/shadow_maps.h"
 
@@ -31,7 +33,7 @@ scene::RectLight tiltedLight() {
 
 // Two casters in front of the light (nearest corners at depth 1.8 / sqrt(2) and 2.3 / sqrt(2))
 // whose union's corner (-1, 2.7, z) lies 0.7 / sqrt(2) behind the light's plane (rand64's case).
-std::vector<Bounds> casters() {
+std::vector<passes::WorldBox> casters() {
     return {box({-1.0f, 0.0f, -0.1f}, {-0.8f, 0.2f, 0.1f}),
             box({2.0f, 2.5f, -0.1f}, {2.2f, 2.7f, 0.1f})};
 }
@@ -46,7 +48,8 @@ TEST(LightWindows, FitTheCastersBoxesNotTheirUnionThatReachesBehindTheLight) {
     const auto light = tiltedLight();
     const auto boxes = casters();
     Bounds all;
-    for (const auto& b : boxes) all.extend(b);
+    for (const auto& b : boxes)
+        for (int i = 0; i < 8; ++i) all.extend(b.corner(i));
     ASSERT_LT(depth({-1.0f, 2.7f, 0.0f}), 0.0f);  // the scene this test is about
 
     const passes::LightWindow w = passes::windowOf(light, boxes);
@@ -57,7 +60,7 @@ TEST(LightWindows, FitTheCastersBoxesNotTheirUnionThatReachesBehindTheLight) {
     // the widest view, reaches 20 times nearer and spans that view.
     EXPECT_NEAR(w.lo.x, -3.8f / 1.8f, 1e-4f);
     EXPECT_NEAR(w.lo.x + w.size.x, 1.9f / 2.5f, 1e-4f);
-    const Bounds union_only[] = {all};
+    const passes::WorldBox union_only[] = {all};
     const passes::LightWindow u = passes::windowOf(light, union_only);
     EXPECT_LT(u.near, 0.05f * w.near);
     EXPECT_GT(u.size.x, passes::kMaxViewTan);
@@ -93,8 +96,8 @@ TEST(LightWindows, ACasterAcrossTheLightsPlaneSetsNearWhereTheWidestViewMeetsIt)
     light.position = {0, 3, 0};
     light.target = {0, 0, 0};
     light.up = {0, 0, -1};
-    const std::vector<Bounds> boxes = {box({1.9f, 2.5f, -0.1f}, {2.1f, 3.5f, 0.1f}),
-                                       box({-0.5f, 0.5f, -0.5f}, {0.5f, 0.6f, 0.5f})};
+    const std::vector<passes::WorldBox> boxes = {box({1.9f, 2.5f, -0.1f}, {2.1f, 3.5f, 0.1f}),
+                                                 box({-0.5f, 0.5f, -0.5f}, {0.5f, 0.6f, 0.5f})};
     const passes::LightWindow w = passes::windowOf(light, boxes);
     EXPECT_NEAR(w.near, 1.9f / passes::kMaxViewTan, 1e-4f);
     EXPECT_NEAR(w.far, 2.5f, 1e-3f);
@@ -115,7 +118,7 @@ TEST(LightWindows, AnOccluderMapsTexelsTakeTheLightsAspectUpToTwoToOne) {
     light.position = {0, 3, 0};
     light.target = {0, 0, 0};
     light.up = {0, 0, -1};
-    const std::vector<Bounds> boxes = {box({-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f})};
+    const std::vector<passes::WorldBox> boxes = {box({-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f})};
     const passes::LightWindow own = passes::windowOf(light, boxes);
     ASSERT_NEAR(own.size.x, own.size.y, 1e-5f);
     const auto aspect = [&](glm::vec2 size) {
@@ -131,4 +134,36 @@ TEST(LightWindows, AnOccluderMapsTexelsTakeTheLightsAspectUpToTwoToOne) {
     EXPECT_NEAR(aspect({1.0f, 1.5f}), 1.0f / 1.5f, 1e-5f);
     EXPECT_NEAR(aspect({1.5f, 0.015f}), passes::kMaxTexelAspect, 1e-5f);
     EXPECT_NEAR(aspect({0.001f, 1.5f}), 1.0f / passes::kMaxTexelAspect, 1e-5f);
+}
+
+TEST(LightWindows, ATurnedPlaneIsBoundedByItsOwnCornersNotTheirAxisAlignedBox) {
+    // A 4 x 4 floor 3 m below a light looking straight at it, both turned 45 degrees about x
+    // and then 45 about z (scripts/scale-scenes --rotate): the floor faces the light, every
+    // point of it 3 m deep. Its turned box's corners are the floor's, so the window's near and
+    // far are 3; the axis-aligned box around them reaches from behind the light to 6.4 m deep,
+    // which set `css`'s depth range and each object's nearest depth there (every caster counted
+    // as the floor's own surface: no shadow at all on caster_outside_view turned).
+    glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(45.0f), glm::vec3(0, 0, 1));
+    turn = glm::rotate(turn, glm::radians(45.0f), glm::vec3(1, 0, 0));
+    const auto turned = [&](glm::vec3 p, float w) { return glm::vec3(turn * glm::vec4(p, w)); };
+    scene::RectLight light;
+    light.position = turned({0, 3, 0}, 1.0f);
+    light.target = turned({0, 0, 0}, 1.0f);
+    light.up = turned({0, 0, -1}, 0.0f);
+    const Bounds floor = box({-2.0f, 0.0f, -2.0f}, {2.0f, 0.0f, 2.0f});
+    const passes::WorldBox own[] = {passes::WorldBox(floor, turn)};
+    Bounds aligned;
+    for (int i = 0; i < 8; ++i) {
+        EXPECT_EQ(own[0].corner(i), turned(floor.corner(i), 1.0f));
+        aligned.extend(own[0].corner(i));
+    }
+    const passes::LightWindow w = passes::windowOf(light, own);
+    EXPECT_NEAR(w.near, 3.0f, 1e-4f);
+    EXPECT_NEAR(w.far, 3.0f, 1e-3f);
+    EXPECT_NEAR(w.lo.x, -2.0f / 3.0f, 1e-4f);
+    EXPECT_NEAR(w.size.y, 4.0f / 3.0f, 1e-4f);
+    const passes::WorldBox around[] = {aligned};
+    const passes::LightWindow a = passes::windowOf(light, around);
+    EXPECT_LT(a.near, 2.0f);
+    EXPECT_GT(a.far - a.near, 2.0f);
 }
