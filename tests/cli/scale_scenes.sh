@@ -40,6 +40,16 @@ same_as_original "$turned" turned.exr "box_floating turned is not the original" 
 "$gen" --scale 1 --mirror x --out a "$scene" >/dev/null
 same_as_original a/box_floating_s1_mx.json mirrored.exr \
     "box_floating mirrored is not the original's mirror image" 1e-5 flop
+# The same light by its other axes: size [h, w], up its former right; `hard`'s one map turns a
+# quarter with it over a square window, so the same visibility.
+"$gen" --scale 1 --swap-light-axes --out a "$scene" \
+    "$PENUMBRA_SOURCE_DIR/scenes/conformance/light_aspect_1to4.json" >/dev/null
+python3 - a/light_aspect_1to4_s1_lswap.json <<'PY' || fail "the swapped light is not the same"
+import json, sys
+light = json.load(open(sys.argv[1]))["lights"][0]
+assert light["size"] == [0.5, 2.0] and max(abs(u - v) for u, v in zip(light["up"], [1, 0, 0])) < 1e-9
+PY
+same_as_original a/box_floating_s1_lswap.json swapped.exr "box_floating's light swapped differs" 1e-6
 # A glTF object's path becomes absolute, so the copy renders from any folder.
 "$gen" --scale 2 --out b "$PENUMBRA_SOURCE_DIR/scenes/conformance/duck_resting.json" >/dev/null
 grep -q "\"gltf\": \"/" b/duck_resting_s2.json || fail "the duck's path stayed relative"
