@@ -63,6 +63,10 @@ expect_exit 2 "--scale: 0 is outside" -- "$gen" --scale 0 --out c "$scene"
 expect_exit 2 "--scale: expected numbers" -- "$gen" --scale x --out c "$scene"
 expect_exit 2 "--offset: expected 3 numbers" -- "$gen" --scale 1 --offset 1,2 --out c "$scene"
 expect_exit 2 "--out" -- "$gen" --scale 2 "$scene"
+# A value that starts with a minus sign is a value, not a flag.
+"$gen" --scale 1 --rotate -30,45,-20 --offset -5,0,0 --out n "$scene" >/dev/null ||
+    fail "--rotate -30,45,-20 --offset -5,0,0 refused"
+[ -f n/box_floating_s1_r-30_45_-20_o-5_0_0.json ] || fail "no copy turned by -30,45,-20"
 expect_exit 2 "--rotate: expected 3 angles" -- "$gen" --scale 1 --rotate 1,2 --out c "$scene"
 expect_exit 2 "--mirror: invalid choice" -- "$gen" --scale 1 --mirror w --out c "$scene"
 sky="$PENUMBRA_SOURCE_DIR/scenes/bench/environment.json"
