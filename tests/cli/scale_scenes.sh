@@ -50,6 +50,10 @@ light = json.load(open(sys.argv[1]))["lights"][0]
 assert light["size"] == [0.5, 2.0] and max(abs(u - v) for u, v in zip(light["up"], [1, 0, 0])) < 1e-9
 PY
 same_as_original a/box_floating_s1_lswap.json swapped.exr "box_floating's light swapped differs" 1e-6
+# The objects in the opposite order: the same visibility, the ids reversed.
+"$gen" --scale 1 --reverse-objects --out a "$scene" >/dev/null
+grep -q '"name": "box_floating_s1_rev"' a/box_floating_s1_rev.json || fail "no reversed copy"
+same_as_original a/box_floating_s1_rev.json reversed.exr "box_floating reversed differs" 1e-6
 # A glTF object's path becomes absolute, so the copy renders from any folder.
 "$gen" --scale 2 --out b "$PENUMBRA_SOURCE_DIR/scenes/conformance/duck_resting.json" >/dev/null
 grep -q "\"gltf\": \"/" b/duck_resting_s2.json || fail "the duck's path stayed relative"
