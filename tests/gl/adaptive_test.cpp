@@ -99,8 +99,10 @@ TEST(AdaptiveGL, DepthDiagnosticMarksThePenumbra) {
 
 TEST(AdaptiveGL, CompareStrideEstimatesTheFullCount) {
     // Epsilon 0.01 leaves the tree partly refined, so the counts decide. Every 2nd pixel
-    // along x and y, counted 4 times, must refine the same cells as every pixel; stride 4
-    // (1/16 of the pixels) within 4 maps of it: counts near epsilon may round either way.
+    // along x and y, counted 4 times, and every 4th (1/16 of the pixels) must refine the same
+    // cells as every pixel but one whose count lies at epsilon: its split adds 3 maps, and
+    // which way it goes depends on the jitter (seeds 1-6: 22 or 25 maps at stride 1, stride 2
+    // the same on 5 of them, stride 4 on 4).
     int maps[3];
     const int strides[3] = {1, 2, 4};
     for (int i = 0; i < 3; ++i)
@@ -110,8 +112,8 @@ TEST(AdaptiveGL, CompareStrideEstimatesTheFullCount) {
     std::printf("maps with compare stride 1, 2, 4: %d, %d, %d\n", maps[0], maps[1], maps[2]);
     EXPECT_GT(maps[0], 9);   // partly refined: more than depth 1's 9 maps
     EXPECT_LT(maps[0], 81);  // and less than the full depth-3 grid
-    EXPECT_EQ(maps[1], maps[0]);
-    EXPECT_NEAR(maps[2], maps[0], 4);
+    EXPECT_NEAR(maps[1], maps[0], 3);
+    EXPECT_NEAR(maps[2], maps[0], 3);
 }
 
 TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
@@ -127,7 +129,7 @@ TEST(AdaptiveGL, WeightingsOnANonUniformRefinement) {
         std::printf("weights %s: MAE %.5f with %d maps\n", names[i], mae[i],
                     r.stats.value("maps_rendered", 0));
     }
-    // Measured 0.042 (area), 0.083 (paper), 0.057 (equal): on this partial refinement the
+    // Measured 0.049 (area), 0.086 (paper), 0.062 (equal): on this partial refinement the
     // paper's depth weights overweight the coarse corners; area weights are clearly best.
     EXPECT_LT(mae[0], mae[1]);
     EXPECT_LT(mae[0], mae[2]);

@@ -132,8 +132,8 @@ inline constexpr std::array kAdaptiveParams = {
              "disagreed, their neighbours and the tiles where a caster's tangent plane cuts "
              "the light; elsewhere the cell stays a leaf (0: the whole image, as the paper)"),
     boolParam(kJitter, true,
-              "move each sample to a random point of its finest-grid cell (false: the paper's "
-              "regular lattice, which aliases with edges parallel to the light's)"),
+              "move each sample to a random point of its finest-grid cell within the light (false: "
+              "the paper's regular lattice, which aliases with edges parallel to the light's)"),
     intParam(kSeed, 1, 0, 1 << 30, "seed of the jitter pattern"),
     intParam(kPcf, 1, 1, 15, "PCF kernel width in texels in the evaluation (3.4.3)"),
     mapSizeParam(1024),

@@ -4,6 +4,7 @@
 
 #include "renderer/techniques/jitter_hash.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -46,11 +47,19 @@ int LightQuadtree::add(glm::ivec2 g, int depth) {
     // A 1D light's samples lie on its centre line.
     glm::vec2 uv(float(g.x) * inv, linear_ ? 0.5f : float(g.y) * inv);
     if (jitter_) {
-        // Uniform in the dual cell [g - 1/2, g + 1/2] / N, clipped to the light.
+        // Uniform in the dual cell [g - 1/2, g + 1/2] / N clipped to the light: the part of
+        // the light the sample stands for (a sample on the light's edge weighs half a cell).
+        // Clamping a point drawn in the whole cell instead put half of the edge samples on the
+        // edge itself (a quarter of the corners on the corner), and the penumbra came out
+        // darker or lighter by their bias (the corpus: receivers' median 0.0072 -> 0.0070).
+        const float half = 0.5f * inv;
+        auto within = [&](float centre, float r) {
+            const float lo = std::max(centre - half, 0.0f), hi = std::min(centre + half, 1.0f);
+            return lo + r * (hi - lo);
+        };
         const unsigned x = unsigned(g.x), y = unsigned(g.y);
-        uv.x += (hashToUnit(seed_, x, 2 * y) - 0.5f) * inv;
-        if (!linear_) uv.y += (hashToUnit(seed_, x, 2 * y + 1) - 0.5f) * inv;
-        uv = glm::clamp(uv, glm::vec2(0.0f), glm::vec2(1.0f));
+        uv.x = within(uv.x, hashToUnit(seed_, x, 2 * y));
+        if (!linear_) uv.y = within(uv.y, hashToUnit(seed_, x, 2 * y + 1));
     }
     samples_.push_back({g, uv, depth});
     index_[static_cast<long long>(g.y) * (n_ + 1) + g.x] = i;

@@ -28,7 +28,8 @@ class LightQuadtree {
 public:
     // MAX_DEPTH bounds the grid; LINEAR selects the 1D subdivision of a light with zero height.
     // With JITTER, each sample moves to a random point (seeded by SEED and its grid position) of
-    // its finest-grid dual cell, so fully refined regions are stratified rather than regular.
+    // its finest-grid dual cell clipped to the light, so fully refined regions are stratified
+    // rather than regular.
     LightQuadtree(int max_depth, bool linear, bool jitter = false, unsigned seed = 1);
 
     // Back to the initial samples (the light's corners or ends) and the single root cell.

@@ -121,5 +121,27 @@ TEST(LightQuadtree, JitterStaysInTheSampleCellAndIsSeeded) {
     EXPECT_TRUE(differs);
 }
 
+// A sample on the light's edge stands for the half cell inside the light: its jitter is uniform
+// there, never piled on the edge (clamping a point of the whole cell put half of them on it).
+TEST(LightQuadtree, EdgeSamplesJitterUniformlyInsideTheLight) {
+    const float half = 0.5f / 8.0f;
+    int on_edge = 0;
+    double sum_x = 0, sum_y = 0;
+    const int seeds = 400;
+    for (int seed = 1; seed <= seeds; ++seed) {
+        const LightQuadtree t(3, false, true, unsigned(seed));
+        const glm::vec2 uv = t.samples()[0].uv;  // the corner (0, 0)
+        EXPECT_GE(std::min(uv.x, uv.y), 0.0f);
+        EXPECT_LE(std::max(uv.x, uv.y), half);
+        on_edge += uv.x == 0.0f || uv.y == 0.0f;
+        sum_x += uv.x;
+        sum_y += uv.y;
+    }
+    EXPECT_LE(on_edge, 2);  // the old clamp: about 3/4 of them
+    // Uniform in [0, half]: mean half / 2 (the clamp's was half / 4), its error about 0.0009.
+    EXPECT_NEAR(sum_x / seeds, 0.5 * half, 0.004);
+    EXPECT_NEAR(sum_y / seeds, 0.5 * half, 0.004);
+}
+
 }  // namespace
 }  // namespace penumbra::techniques::adaptive
