@@ -73,8 +73,9 @@ PENUMBRA_QUARTER = 0.25  # adaptive's goal: <= 0.5 where at most this share is i
 
 def add_arguments(p):
     p.add_argument("--pareto-scenes", type=parse_scenes, default=SCENES,
-                   help="pareto: conformance scenes, comma-separated (default: "
-                   f"{','.join(SCENES)})")
+                   help="pareto: conformance scenes by name or scene files (.json, e.g. "
+                   "scripts/random-scenes' output), comma-separated; a file's rows are named "
+                   f"by its stem (default: {','.join(SCENES)})")
     p.add_argument("--pareto-samples", type=parse_samples, default=list(range(1, 17)),
                    help="pareto: reference's N, A:B or a list (default 1:16, every N)")
     p.add_argument("--pareto-techniques", type=parse_techniques, default=TECHNIQUES,
@@ -86,15 +87,32 @@ def add_arguments(p):
                    "DIR is its pareto/ folder); a sweep missing there is left out")
 
 
+# A scene's file by its row name: the conformance scenes', and those --pareto-scenes named by
+# their path.
+SCENE_FILES = {s: os.path.join(ROOT, "scenes", "conformance", f"{s}.json") for s in SCENES}
+
+
 def parse_scenes(text):
-    """'a,b' -> ['a', 'b'], each a scene of scenes/conformance; argparse's error otherwise."""
-    scenes = [s for s in text.split(",") if s]
-    for s in scenes:
-        if not os.path.isfile(os.path.join(ROOT, "scenes", "conformance", f"{s}.json")):
-            raise argparse.ArgumentTypeError(f"no conformance scene '{s}'")
-    if not scenes:
+    """'a,b' -> ['a', 'b'], each a scene of scenes/conformance or a scene file (ending in
+    .json; its row name is its stem, recorded in SCENE_FILES); argparse's error otherwise."""
+    names = []
+    for s in (s for s in text.split(",") if s):
+        if s.endswith(".json"):
+            name, path = os.path.splitext(os.path.basename(s))[0], os.path.abspath(s)
+            if not os.path.isfile(path):
+                raise argparse.ArgumentTypeError(f"no scene file '{s}'")
+        else:
+            name, path = s, os.path.join(ROOT, "scenes", "conformance", f"{s}.json")
+            if not os.path.isfile(path):
+                raise argparse.ArgumentTypeError(f"no conformance scene '{s}'")
+        if SCENE_FILES.get(name, path) != path or name in names:
+            raise argparse.ArgumentTypeError(f"two scenes named '{name}' (rows and folders are "
+                                             "named by the file's stem)")
+        SCENE_FILES[name] = path
+        names.append(name)
+    if not names:
         raise argparse.ArgumentTypeError("no scene")
-    return scenes
+    return names
 
 
 def parse_techniques(text):
@@ -173,7 +191,7 @@ def sweep(b, scene, label, technique, fixed, varied, root):
     if b.args.pareto_from:
         return None, sweep_from_csv(b, scene, label)
     folder = os.path.join(root, scene, label)
-    cmd = [b.binary, "sweep", os.path.join(ROOT, "scenes", "conformance", f"{scene}.json"),
+    cmd = [b.binary, "sweep", SCENE_FILES[scene],
            "-t", technique, "--size", b.size, "--warmup", "1", "--repeat", str(b.repeat),
            "--cache", os.path.join(root, "references"), "--no-report", "--quiet", "-o", folder]
     for k, v in fixed.items():

@@ -1,5 +1,6 @@
 # scripts/bench pareto --pareto-from: the tables from an earlier run's sweep.csv files (a device
-# run's tarball), no rendering; a missing sweep is left out, named, and the exit is 1.
+# run's tarball), no rendering; a missing sweep is left out, named, and the exit is 1; scene
+# files by their stem, and the scene lists refused.
 source "$(dirname "$0")/lib.sh"
 cd "$WORK"
 mkdir -p from/light_size_2/reference from/light_size_2/css from/light_size_2/css_every_pixel
@@ -38,4 +39,26 @@ grep -q "no from/light_size_2/ssm/sweep.csv; ssm on light_size_2 is left out" lo
     fail "the missing sweep is not named"
 grep -q "these sweeps failed and are left out: light_size_2 ssm" log || fail "no summary"
 grep -q '^| `css` | 0.25 / 0.10 |' log || fail "css's table is gone with ssm's sweep"
+# A scene file (a word ending in .json) is named by its stem: its sweeps are DIR/STEM/SWEEP.
+mkdir -p scenes/a scenes/b
+cp "$PENUMBRA_SOURCE_DIR/scenes/conformance/light_size_2.json" scenes/a/mine.json
+cp scenes/a/mine.json scenes/b/mine.json
+cp -r from/light_size_2 from/mine
+"$PENUMBRA_SOURCE_DIR/scripts/bench" pareto --no-build --binary "$PENUMBRA" --pareto-samples 1,2,4 \
+    --pareto-scenes scenes/a/mine.json --pareto-from from --out out2 --pareto-techniques css \
+    >log 2>&1 || { cat log; fail "a scene file's sweeps were not read"; }
+grep -q '^| technique | mine |' log || { cat log; fail "the scene file's rows are not named mine"; }
+grep -q '^| `css` | 0.25 / 0.10 |' log || { cat log; fail "the scene file's ratios are wrong"; }
+refused() {  # --pareto-scenes VALUE, the message expected
+    rc=0
+    "$PENUMBRA_SOURCE_DIR/scripts/bench" pareto --no-build --binary "$PENUMBRA" \
+        --pareto-scenes "$1" --pareto-from from --out out3 >log 2>&1 || rc=$?
+    [ $rc = 2 ] && grep -q "$2" log || { cat log; fail "--pareto-scenes $1: exit $rc"; }
+}
+refused scenes/none.json "no scene file 'scenes/none.json'"
+refused scenes/a/mine.json,scenes/b/mine.json "two scenes named 'mine'"
+cp scenes/a/mine.json scenes/a/light_size_2.json
+refused light_size_2,scenes/a/light_size_2.json "two scenes named 'light_size_2'"
+refused nosuchscene "no conformance scene 'nosuchscene'"
+[ ! -e out3 ] || fail "a refused --pareto-scenes wrote out3"
 echo "bench_pareto_from ok"
