@@ -320,15 +320,19 @@ def print_summary(table, scenes):
 
 
 def goal(name, bound, rows):
-    """One line per goal: each scene's ratio, met where it (an upper bound or not) is <= bound."""
+    """One line per goal: each scene's ratio, met where it (an upper bound or not) is <= bound;
+    where some scenes meet it and others not, how many do."""
     if not rows:
         print(f"{name} (goal <= {bound}): no scene of this kind in the subset")
         return
-    parts, met = [], True
+    parts, met = [], 0
     for r in rows:
         parts.append(f"{r['scene']}{r.get('note', '')} {ee.fmt_ratio(r['ratio'], r['kind'])}")
-        met = met and r["ratio"] <= bound
-    print(f"{name} (goal <= {bound}): " + ", ".join(parts) + (": met" if met else ": NOT met"))
+        met += r["ratio"] <= bound
+    verdict = ": met" if met == len(rows) else ": NOT met"
+    if len(rows) > 1 and 0 < met < len(rows):
+        verdict += f" (met on {met} of {len(rows)})"
+    print(f"{name} (goal <= {bound}): " + ", ".join(parts) + verdict)
 
 
 def pick(rows, sweep, params=None):

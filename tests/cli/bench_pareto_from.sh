@@ -49,6 +49,15 @@ cp -r from/light_size_2 from/mine
     >log 2>&1 || { cat log; fail "a scene file's sweeps were not read"; }
 grep -q '^| technique | mine |' log || { cat log; fail "the scene file's rows are not named mine"; }
 grep -q '^| `css` | 0.25 / 0.10 |' log || { cat log; fail "the scene file's ratios are wrong"; }
+# A goal some scenes meet and others not says how many: mine2's css at 3 ms is 0.15.
+cp scenes/a/mine.json scenes/a/mine2.json
+cp -r from/light_size_2 from/mine2
+sed -i 's/^run-0001,css,4,256,sat,5.0,/run-0001,css,4,256,sat,3.0,/' from/mine2/css/sweep.csv
+"$PENUMBRA_SOURCE_DIR/scripts/bench" pareto --no-build --binary "$PENUMBRA" --pareto-samples 1,2,4 \
+    --pareto-scenes light_size_2,scenes/a/mine2.json --pareto-from from --out out2 \
+    --pareto-techniques css >log 2>&1 || { cat log; fail "two scenes' sweeps were not read"; }
+grep -q "css, one light (goal <= 0.2): light_size_2 0.25, mine2 0.15: NOT met (met on 1 of 2)" log ||
+    { cat log; fail "no count of the scenes that meet the goal"; }
 refused() {  # --pareto-scenes VALUE, the message expected
     rc=0
     "$PENUMBRA_SOURCE_DIR/scripts/bench" pareto --no-build --binary "$PENUMBRA" \
