@@ -87,9 +87,13 @@ def add_arguments(p):
                    "DIR is its pareto/ folder); a sweep missing there is left out")
 
 
+def conformance_file(name):
+    return os.path.join(ROOT, "scenes", "conformance", f"{name}.json")
+
+
 # A scene's file by its row name: the conformance scenes', and those --pareto-scenes named by
 # their path.
-SCENE_FILES = {s: os.path.join(ROOT, "scenes", "conformance", f"{s}.json") for s in SCENES}
+SCENE_FILES = {s: conformance_file(s) for s in SCENES}
 
 
 def parse_scenes(text):
@@ -102,7 +106,7 @@ def parse_scenes(text):
             if not os.path.isfile(path):
                 raise argparse.ArgumentTypeError(f"no scene file '{s}'")
         else:
-            name, path = s, os.path.join(ROOT, "scenes", "conformance", f"{s}.json")
+            name, path = s, conformance_file(s)
             if not os.path.isfile(path):
                 raise argparse.ArgumentTypeError(f"no conformance scene '{s}'")
         if SCENE_FILES.get(name, path) != path or name in names:
