@@ -26,12 +26,14 @@
 #define SSM_IMAGE_PLANES_TARGET 0
 // compact.comp
 #define SSM_UNIT_COMPACT_OCCLUDER 0
+#define SSM_UNIT_COMPACT_SLOPES 1  // with `lod`: lod.comp's plane slopes
 // lod.comp
 #define SSM_UNIT_LOD_DEPTH 0
 #define SSM_UNIT_LOD_IDS 1
 #define SSM_UNIT_LOD_PYRAMID 2
 #define SSM_IMAGE_LOD_LEVEL 0
 #define SSM_IMAGE_LOD_PATCHES 1
+#define SSM_IMAGE_LOD_SLOPES 2
 // splat.vert and splat.frag
 #define SSM_UNIT_SPLAT_RECEIVER 1
 #define SSM_UNIT_SPLAT_RECEIVER_MAX 2

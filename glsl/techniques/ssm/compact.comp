@@ -11,6 +11,7 @@ layout(local_size_x = SCAN_INVOCATIONS) in;
 // Linear depth in [0, 1] of the window; with `lod`, lod.comp's map: (depth, level, nearest
 // depth); u_merged says which
 layout(binding = SSM_UNIT_COMPACT_OCCLUDER) uniform sampler2D u_occluder;
+layout(binding = SSM_UNIT_COMPACT_SLOPES) uniform sampler2D u_slopes;  // u_merged: lod.comp's
 uniform int u_phase;
 uniform int u_run;      // texels per run
 uniform int u_runs;     // runs: the map's texels / u_run, rounded up
@@ -23,6 +24,8 @@ struct Patch {
     uint texel;    // y * map size + x, plus the level << SSM_LEVEL_SHIFT (a 2^level block)
     float z;       // distance from the light (a merged block's: the middle of its depths)
     float z_near;  // its nearest micro-patch's
+    float slope_x;  // a merged block's plane: slopes of 1 / distance per texel (lod.comp), else 0
+    float slope_y;
 };
 layout(std430, binding = SSM_BINDING_PATCHES) writeonly buffer Patches {
     Patch u_patches[];
@@ -91,9 +94,12 @@ void main() {
     uint slot = u_runs_slot[r];
     for (uint t = first; t < end; ++t) {
         vec3 d = depthAt(t, size.x);
-        if (d.x != u_empty)
-            u_patches[slot++] =
-                Patch(t | (uint(d.y) << SSM_LEVEL_SHIFT), u_occ_near + d.x * u_occ_range,
-                      u_occ_near + d.z * u_occ_range);
+        if (d.x == u_empty) continue;
+        vec2 slopes = u_merged == 1 ? texelFetch(u_slopes, ivec2(int(t) % size.x, int(t) / size.x),
+                                                 0).xy
+                                    : vec2(0.0);
+        u_patches[slot++] =
+            Patch(t | (uint(d.y) << SSM_LEVEL_SHIFT), u_occ_near + d.x * u_occ_range,
+                  u_occ_near + d.z * u_occ_range, slopes.x, slopes.y);
     }
 }

@@ -33,6 +33,10 @@ flat in ivec2 v_texel;   // its (first) occluder texel
 flat in float v_reach;   // far side: its surface's depth span beyond it (splat.vert)
 flat in vec4 v_sealed;   // its edges grown by u_seal toward its own object (splat.vert)
 uniform float u_seal;
+// A merged block of a tilted surface: its plane's corner distances (splat.vert); 0 parallel
+flat in vec4 v_corner_z;
+flat in int v_planar;
+uniform float u_lod_depth;  // its micro-patches lie within half of this of their distance
 
 // A merged patch's micro-patches (a receiver near it in depth counts them one by one)
 layout(binding = SSM_UNIT_SPLAT_OCC_DEPTH) uniform sampler2D u_occ_depth;  // linear
@@ -68,6 +72,52 @@ void addSamples(vec4 u) {
     if (k.z <= k.x || k.w <= k.y) return;
     for (int w = 0; w < SSM_SAMPLE_WORDS; ++w)
         g_mask[w] |= rowRun(2 * w, k) | (rowRun(2 * w + 1, k) << 16u);
+}
+
+// Ors the samples that a merged block's plane hides from the receiver P into g_mask: its
+// corners, each at its own distance, back-projected from P onto the light (a plane's central
+// projection is a quadrilateral, convex as every corner lies in front of P). Along row j a
+// sample (i, j) moves by (16, 1) / 256 per i, so each edge bounds i on one side, at a bound
+// linear in j: every row's run from four multiply-adds per edge.
+void addQuad(vec3 p) {
+    vec2 uv[4] = vec2[4](v_rect.xy, v_rect.zy, v_rect.zw, v_rect.xw);
+    vec2 c[4];
+    float twice_area = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        float z = v_corner_z[k];
+        vec2 onto = p.xy + (uv[k] * z - p.xy) * (p.z / (p.z - z));
+        c[k] = (onto + u_light_half) / (2.0 * u_light_half);
+    }
+    for (int k = 0; k < 4; ++k) twice_area += c[k].x * c[(k + 1) & 3].y - c[k].y * c[(k + 1) & 3].x;
+    if (twice_area == 0.0) return;
+    float turn = sign(twice_area);  // counter-clockwise edges keep the inside on their left
+    // Per edge: inside where f(j) + g i >= 0, f(j) = f0 + df j (sample (0, j) at
+    // ((j + 0.5) / 256, (16 j + 0.5) / 256)).
+    vec4 f0, df, g;
+    for (int k = 0; k < 4; ++k) {
+        vec2 a = c[k], e = (c[(k + 1) & 3] - a) * turn;
+        f0[k] = (e.x * (0.5 / 256.0 - a.y) - e.y * (0.5 / 256.0 - a.x));
+        df[k] = (e.x * 16.0 - e.y) / 256.0;
+        g[k] = (e.x - e.y * 16.0) / 256.0;
+    }
+    bvec4 lower = greaterThan(g, vec4(0.0)), upper = lessThan(g, vec4(0.0));
+    vec4 inverse = 1.0 / mix(vec4(1.0), g, not(equal(g, vec4(0.0))));
+    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w) {
+        uint word = 0u;
+        for (int half_row = 0; half_row < 2; ++half_row) {
+            float j = float(2 * w + half_row);
+            vec4 f = f0 + df * j, t = -f * inverse;
+            // An edge with g = 0 keeps the whole row or none of it.
+            vec4 from = mix(mix(vec4(-1.0), vec4(16.0), lessThan(f, vec4(0.0))), t, lower);
+            vec4 to = mix(vec4(15.0), t, upper);
+            float lo = max(max(from.x, from.y), max(from.z, from.w));
+            float hi = min(min(to.x, to.y), min(to.z, to.w));
+            int a = int(ceil(clamp(lo, 0.0, 16.0))), b = int(floor(clamp(hi, -1.0, 15.0)));
+            uint run = a <= b ? ((2u << uint(b)) - 1u) & ~((1u << uint(a)) - 1u) : 0u;
+            word |= run << uint(16 * half_row);
+        }
+        g_mask[w] |= word;
+    }
 }
 #else
 float g_sum = 0.0;  // the summed covered area
@@ -164,25 +214,53 @@ void main() {
     // face in front of its steep lit wall striped the wall (random scene rand20: 0.31).
     bool own = u_layer_count > 1 && texelFetch(u_layer_ids, ivec3(texel, u_layer), 0).r == v_object;
 #if SAMPLES
-    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w) g_mask[w] = 0u;
+    uint have[SSM_SAMPLE_WORDS];
+    uint all = ~0u;
+    for (int w = 0; w < SSM_SAMPLE_WORDS; ++w) {
+        have[w] = imageLoad(u_masks, ivec3(texel, u_layer * SSM_SAMPLE_WORDS + w)).r;
+        all &= have[w];
+        g_mask[w] = 0u;
+    }
+    if (all == ~0u) discard;
+#endif
+    // One call site per way of counting (each is inlined where it is called; a software
+    // rasteriser runs every inlined copy for every fragment, lanes masked off or not).
+    const int kMicroPatches = 0, kPlane = 1, kOwnObject = 2, kPatch = 3;
+    int how = kPatch;
+#if SAMPLES
+    if (v_planar == 1) {
+        // A tilted block's plane: its back-projection where every corner lies in front of the
+        // receiver by more than its micro-patches may stray from it; else, or on its own
+        // object (the tangent-plane test), micro-patch by micro-patch.
+        float far = max(max(v_corner_z.x, v_corner_z.y), max(v_corner_z.z, v_corner_z.w));
+        how = own || zr - far <= (u_depth_bias + kNearSpans * u_lod_depth) * zr ? kMicroPatches
+                                                                                 : kPlane;
+    } else
 #endif
     if (v_children > 1 &&
         zr - v_depth_near <= kNearSpans * 2.0 * (v_depth - v_depth_near) + u_depth_bias * zr) {
         // Near a merged patch in depth, within a few of its depth spans, its one depth would
         // misplace the micro-patches' back-projections, or count ones the bias drops: count
         // them one by one (at most lod.comp's largest block).
-        addMicroPatches(texel, p, own);
-    } else if (own) {
-        if (zr - v_depth <= u_depth_bias * zr) discard;
-        addOwnObject(texel, v_rect * v_depth, v_depth, p);
+        how = kMicroPatches;
     } else {
         if (zr - v_depth <= u_depth_bias * zr) discard;
-        add(v_rect * v_depth, v_depth, p);
+        how = own ? kOwnObject : kPatch;
     }
+    if (how == kMicroPatches)
+        addMicroPatches(texel, p, own);
+#if SAMPLES
+    else if (how == kPlane)
+        addQuad(p);
+#endif
+    else if (how == kOwnObject)
+        addOwnObject(texel, v_rect * v_depth, v_depth, p);
+    else
+        add(v_rect * v_depth, v_depth, p);
 #if SAMPLES
     // The colour writes are masked off: the masks are the output.
     for (int w = 0; w < SSM_SAMPLE_WORDS; ++w)
-        if (g_mask[w] != 0u)
+        if ((g_mask[w] & ~have[w]) != 0u)
             imageAtomicOr(u_masks, ivec3(texel, u_layer * SSM_SAMPLE_WORDS + w), g_mask[w]);
     o_occlusion = vec4(0.0);
 #else

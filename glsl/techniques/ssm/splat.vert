@@ -19,6 +19,8 @@ struct Patch {
     uint texel;  // y * map size + x, plus the level << SSM_LEVEL_SHIFT (a 2^level block, lod.comp)
     float z;     // distance from the light (a merged block's: the middle of its depths)
     float z_near;  // its nearest micro-patch's
+    float slope_x;  // a merged block's plane: slopes of 1 / distance per texel (lod.comp), else 0
+    float slope_y;
 };
 layout(std430, binding = SSM_BINDING_PATCHES) readonly buffer Patches {
     Patch u_patches[];
@@ -57,6 +59,10 @@ flat out float v_depth_near;  // its nearest micro-patch's distance (merged, lod
 flat out int v_children;      // micro-patches per side merged into it (lod.comp), 1 unmerged
 flat out ivec2 v_texel;       // its (first) occluder texel
 flat out float v_depth;       // its distance from the light
+// A merged block of a tilted surface (a plane, lod.comp): its corners' distances, (x0, y0),
+// (x1, y0), (x1, y1), (x0, y1) of v_rect; v_planar 0 for a patch parallel to the light.
+flat out vec4 v_corner_z;
+flat out int v_planar;
 
 // The far side's patch at TEXEL, depth Z, stands for the farthest surface in its texel; where
 // that surface is steep (a box's side wall seen from the light's centre) the patch hovers over
@@ -114,6 +120,16 @@ void main() {
         rect += vec4(-v_sealed.xy, v_sealed.zw) * u_seal * u_occ_texel.xyxy;
     }
     float z = p.z_near;  // the extent of a merged patch's nearest micro-patch
+    v_planar = p.slope_x != 0.0 || p.slope_y != 0.0 ? 1 : 0;
+    v_corner_z = vec4(p.z);
+    if (v_planar == 1) {
+        // The plane at the (sealed) rectangle's corners, in texels from the block's middle.
+        vec4 edge = vec4(-0.5 * width) + vec4(-v_sealed.xy, v_sealed.zw) * u_seal;
+        edge.zw += width;
+        vec4 inverse = 1.0 / p.z + p.slope_x * edge.xzzx + p.slope_y * edge.yyww;
+        v_corner_z = 1.0 / max(inverse, vec4(1e-30));
+        z = min(z, min(min(v_corner_z.x, v_corner_z.y), min(v_corner_z.z, v_corner_z.w)));
+    }
     // Penumbra rectangle on the virtual plane (3.3), in window units: the patch grown by half
     // the light times (1/z_O - 1/z_R).
     vec2 grow = u_light_half * max(1.0 / z - 1.0 / u_receiver_far, 0.0);

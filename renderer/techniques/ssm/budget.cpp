@@ -24,8 +24,8 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const auto layers = static_cast<u64>(p.get(kLayers));
     MemoryTerms out;
     // Per occluder texel and side: depth, id, list entry; with `lod` one pyramid (16 bytes,
-    // 4/3 with its levels) and the merged map (16 bytes), shared by the sides.
-    const u64 lod = p.get(kLod) > 0.0 ? 38 : 0;
+    // 4/3 with its levels), the merged map (16 bytes) and its slopes (8), shared by the sides.
+    const u64 lod = p.get(kLod) > 0.0 ? 46 : 0;
     out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
                    saturatingProduct({m, m, (4 + 4 + sizeof(MicroPatch)) * sides + lod})});
     // Per receiver layer: soft shadow maps (per side) or the sample masks, depth and id, the

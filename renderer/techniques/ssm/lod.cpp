@@ -16,6 +16,7 @@ void Ssm::prepareLod() {
     lod_pyramid_ =
         gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "ssm lod pyramid", lod_levels_);
     lod_patches_ = gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "ssm lod micro-patches");
+    lod_slopes_ = gl::createTexture2D(GL_RG32F, map_size_, map_size_, "ssm lod slopes");
 }
 
 // The pyramid level by level (phases 0 and 1), then the merged map (phase 2).
@@ -34,6 +35,9 @@ void Ssm::buildLod(const scene::RectLight& light, const LightWindow& occ, const 
     gl::setUniform(p, "u_light_half", 0.5f * light.size);
     gl::setUniform(p, "u_receiver_far", soft.far);
     gl::setParamUniforms(p, kSsmParams, params_);  // lod, lod_depth
+    // The sample masks back-project a merged block's plane (splat.frag); the area sum's
+    // intervals need patches parallel to the light.
+    gl::setUniform(p, "u_planar", samples_ ? 1 : 0);
     const auto dispatch = [](int size) {
         const auto groups = static_cast<GLuint>((std::max(size, 1) + 7) / 8);
         glDispatchCompute(groups, groups, 1);
@@ -50,6 +54,8 @@ void Ssm::buildLod(const scene::RectLight& light, const LightWindow& occ, const 
     gl::setUniform(p, "u_level", lod_levels_ - 1);
     glBindImageTexture(SSM_IMAGE_LOD_PATCHES, lod_patches_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);
+    glBindImageTexture(SSM_IMAGE_LOD_SLOPES, lod_slopes_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RG32F);
     dispatch(map_size_);
     glUseProgram(0);
 }

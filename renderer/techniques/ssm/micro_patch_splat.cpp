@@ -57,6 +57,7 @@ void Ssm::compact(const LightWindow& occ, int side) {
     const auto& p = compact_program_;
     glUseProgram(p.id());
     glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, patchSource(side).id());
+    if (lod_) glBindTextureUnit(SSM_UNIT_COMPACT_SLOPES, lod_slopes_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                      gpu_patches_[size_t(side)].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());

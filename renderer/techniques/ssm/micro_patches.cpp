@@ -3,14 +3,20 @@
 
 namespace penumbra::techniques::ssm {
 
-void readMicroPatches(const gl::Texture& source, bool merged, int map_size,
+void readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
                       const passes::LightWindow& window, float empty, std::vector<float>& scratch,
                       std::vector<MicroPatch>& patches) {
     const size_t n = static_cast<size_t>(map_size) * static_cast<size_t>(map_size);
+    const bool merged = slopes != nullptr;
     const size_t channels = merged ? 4 : 1;
-    scratch.resize(n * channels);
+    scratch.resize(n * (channels + (merged ? 2 : 0)));
     glGetTextureImage(source.id(), 0, merged ? GL_RGBA : GL_DEPTH_COMPONENT, GL_FLOAT,
                       static_cast<GLsizei>(n * channels * sizeof(float)), scratch.data());
+    const float* slope = scratch.data() + n * channels;
+    if (merged)
+        glGetTextureImage(slopes->id(), 0, GL_RG, GL_FLOAT,
+                          static_cast<GLsizei>(n * 2 * sizeof(float)),
+                          scratch.data() + n * channels);
     patches.clear();
     for (size_t t = 0; t < n; ++t) {
         const float d = scratch[t * channels];
@@ -19,7 +25,9 @@ void readMicroPatches(const gl::Texture& source, bool merged, int map_size,
         const float near = merged ? scratch[t * channels + 2] : d;
         const float z = window.near + d * (window.far - window.near);
         const float z_near = window.near + near * (window.far - window.near);
-        patches.push_back({static_cast<std::uint32_t>(t) | (level << kLevelShift), z, z_near});
+        const float sx = merged ? slope[2 * t] : 0.0f, sy = merged ? slope[2 * t + 1] : 0.0f;
+        patches.push_back(
+            {static_cast<std::uint32_t>(t) | (level << kLevelShift), z, z_near, sx, sy});
     }
 }
 

@@ -19,14 +19,19 @@ struct MicroPatch {
     std::uint32_t texel;
     float z;       // distance from the light (a merged patch's: the middle of its depths)
     float z_near;  // its nearest micro-patch's (z when unmerged)
+    // A merged block's plane (accumulate=samples, lod.comp): slopes of 1 / distance per texel
+    // in x and y; 0 for a patch parallel to the light
+    float slope_x;
+    float slope_y;
 };
-static_assert(sizeof(MicroPatch) == 12);
+static_assert(sizeof(MicroPatch) == 20);
 inline constexpr int kLevelShift = 24;  // maps up to 4096^2 = 2^24 texels
 
 // Reads the MAP_SIZE^2 occluder map SOURCE (window WINDOW) back and appends one micro-patch per
 // texel that is not EMPTY (the cleared depth) to PATCHES (cleared first). SOURCE is the linear
-// depth map, or with MERGED lod.comp's map of (depth, level, nearest depth, 0).
-void readMicroPatches(const gl::Texture& source, bool merged, int map_size,
+// depth map, or with SLOPES (merged) lod.comp's map of (depth, level, nearest depth, 0) and
+// SLOPES its planes' slopes.
+void readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
                       const passes::LightWindow& window, float empty, std::vector<float>& scratch,
                       std::vector<MicroPatch>& patches);
 

@@ -167,8 +167,8 @@ void Ssm::render(frame::FrameContext& ctx) {
             if (!cpu_path_) ctx.pass(sidePass("ssm_compact", side), [&] { compact(occ, side); });
             if (cpu_path_)
                 ctx.pass(sidePass("ssm_readback", side), [&] {
-                    ssm::readMicroPatches(patchSource(side), lod_, map_size_, occ, emptyDepth(side),
-                                          scratch_, patches_);
+                    ssm::readMicroPatches(patchSource(side), lod_ ? &lod_slopes_ : nullptr,
+                                          map_size_, occ, emptyDepth(side), scratch_, patches_);
                     patches_buffer_.upload(std::span<const ssm::MicroPatch>(patches_),
                                            GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                                            sizeof(ssm::MicroPatch));

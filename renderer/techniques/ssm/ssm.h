@@ -84,7 +84,8 @@ inline constexpr std::array kSsmParams = {
         .uniform(),
     floatParam(kLodDepth, 0.005, 0.0, 1.0,
                "merged micro-patches' depths span at most this fraction of their distance from "
-               "the light")
+               "the light (accumulate=samples: around the plane through the block, so a tilted "
+               "surface merges too)")
         .uniform(),
     enumParam(kAccumulate, Accumulate::Samples,
               "samples: each texel keeps which of 256 light samples some micro-patch hides (the "
@@ -236,6 +237,7 @@ private:
     gl::Texture lod_pyramid_;  // RGBA32F mips: per block nearest, farthest depth, id, mergeable
     gl::Texture lod_patches_;  // RGBA32F: per merged block at its first texel middle depth, level,
                                // nearest depth
+    gl::Texture lod_slopes_;   // RG32F: per merged block at its first texel its plane's slopes
     int lod_levels_ = 1;
     gl::Buffer counters_;
     gl::Buffer command_;       // path=gpu: the splat's indirect draw
