@@ -56,10 +56,17 @@
 #define SSM_UNIT_VISIBILITY_LAYER_IDS 6  // the object id per layer texel
 // A micro-patch's texel index holds its lod level from this bit (micro_patches.h kLevelShift)
 #define SSM_LEVEL_SHIFT 24
+// The splat's patch classes, each drawn by its own program (PATCH_CLASS) from its own range of
+// the list (micro_patches.h PatchClass): a software rasteriser runs every branch a shader has
+// for every fragment, so each program holds only its class's ways of counting
+#define SSM_CLASS_MICRO 0  // an unmerged micro-patch
+#define SSM_CLASS_FLAT 1   // a merged block at one depth (lod.comp)
+#define SSM_CLASS_PLANE 2  // a merged block on a tilted plane (lod.comp, accumulate=samples)
+#define SSM_CLASSES 3
 // Buffers
 #define SSM_BINDING_COUNTERS 3      // splat.vert's Counters
 #define SSM_BINDING_PATCHES 4       // splat.vert's and compact.comp's Patches
-#define SSM_BINDING_COMMAND 5       // compact.comp's Command (path gpu)
+#define SSM_BINDING_COMMAND 5       // the splat's draw command per class (compact.comp, splat.vert)
 #define SSM_BINDING_RUNS 6          // compact.comp's Runs (path gpu)
 #define SSM_BINDING_LAYER_COUNTS 7  // kbuffer_resolve.frag's LayerCounts
 

@@ -9,6 +9,10 @@
 #ifndef SAMPLES
 #define SAMPLES 0
 #endif
+// The class of patches this program draws (bindings.glsl): it holds only their ways of counting
+#ifndef PATCH_CLASS
+#define PATCH_CLASS SSM_CLASS_MICRO
+#endif
 // Linear receiver depth, 1 = none
 layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;
 uniform int u_layer;  // the receiver layer splatted into
@@ -33,9 +37,8 @@ flat in ivec2 v_texel;   // its (first) occluder texel
 flat in float v_reach;   // far side: its surface's depth span beyond it (splat.vert)
 flat in vec4 v_sealed;   // its edges grown by u_seal toward its own object (splat.vert)
 uniform float u_seal;
-// A merged block of a tilted surface: its plane's corner distances (splat.vert); 0 parallel
+// A merged block of a tilted surface (SSM_CLASS_PLANE): its plane's corner distances
 flat in vec4 v_corner_z;
-flat in int v_planar;
 uniform float u_lod_depth;  // its micro-patches lie within half of this of their distance
 
 // A merged patch's micro-patches (a receiver near it in depth counts them one by one)
@@ -154,7 +157,7 @@ void addOwnObject(ivec2 t, vec4 r, float z, vec3 p) {
     vec3 n = texelFetch(u_planes, ivec3(t, u_layer), 0).xyz;
     if (n == vec3(0.0)) return;
     float margin = (u_depth_bias + 2.0 * max(u_ssm_texel.x, u_ssm_texel.y)) * p.z;
-    if (v_children == 1) {
+    if (PATCH_CLASS == SSM_CLASS_MICRO || v_children == 1) {
         if (above(n, r, z, p, margin)) add(r, z, p);
         return;
     }
@@ -224,21 +227,20 @@ void main() {
     if (all == ~0u) discard;
 #endif
     // One call site per way of counting (each is inlined where it is called; a software
-    // rasteriser runs every inlined copy for every fragment, lanes masked off or not).
+    // rasteriser runs every inlined copy for every fragment, lanes masked off or not), and in
+    // each class's program only its class's ways.
     const int kMicroPatches = 0, kPlane = 1, kOwnObject = 2, kPatch = 3;
     int how = kPatch;
-#if SAMPLES
-    if (v_planar == 1) {
+    if (PATCH_CLASS == SSM_CLASS_PLANE) {
         // A tilted block's plane: its back-projection where every corner lies in front of the
         // receiver by more than its micro-patches may stray from it; else, or on its own
         // object (the tangent-plane test), micro-patch by micro-patch.
         float far = max(max(v_corner_z.x, v_corner_z.y), max(v_corner_z.z, v_corner_z.w));
         how = own || zr - far <= (u_depth_bias + kNearSpans * u_lod_depth) * zr ? kMicroPatches
                                                                                  : kPlane;
-    } else
-#endif
-    if (v_children > 1 &&
-        zr - v_depth_near <= kNearSpans * 2.0 * (v_depth - v_depth_near) + u_depth_bias * zr) {
+    } else if (PATCH_CLASS == SSM_CLASS_FLAT &&
+               zr - v_depth_near <=
+                   kNearSpans * 2.0 * (v_depth - v_depth_near) + u_depth_bias * zr) {
         // Near a merged patch in depth, within a few of its depth spans, its one depth would
         // misplace the micro-patches' back-projections, or count ones the bias drops: count
         // them one by one (at most lod.comp's largest block).
@@ -247,15 +249,15 @@ void main() {
         if (zr - v_depth <= u_depth_bias * zr) discard;
         how = own ? kOwnObject : kPatch;
     }
-    if (how == kMicroPatches)
+    if (PATCH_CLASS != SSM_CLASS_MICRO && how == kMicroPatches)
         addMicroPatches(texel, p, own);
 #if SAMPLES
-    else if (how == kPlane)
+    else if (PATCH_CLASS == SSM_CLASS_PLANE && how == kPlane)
         addQuad(p);
 #endif
-    else if (how == kOwnObject)
+    else if (PATCH_CLASS != SSM_CLASS_PLANE && how == kOwnObject)
         addOwnObject(texel, v_rect * v_depth, v_depth, p);
-    else
+    else if (PATCH_CLASS != SSM_CLASS_PLANE)
         add(v_rect * v_depth, v_depth, p);
 #if SAMPLES
     // The colour writes are masked off: the masks are the output.

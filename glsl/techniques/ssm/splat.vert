@@ -3,10 +3,18 @@
 // light at the texel's depth). Four strip vertices span its penumbra rectangle on the soft
 // shadow map (Atty et al. 3.3). The list comes from compact.comp (GPU path) or from the host's
 // readback (CPU path, 4.1). With CLIP the extent uses the farthest receiver under the quad.
+// One draw per patch class (PATCH_CLASS), from that class's range of the list.
 #include "techniques/ssm/bindings.glsl"
 #ifndef CLIP
 #define CLIP 0
 #endif
+#ifndef PATCH_CLASS
+#define PATCH_CLASS SSM_CLASS_MICRO
+#endif
+// Per class: (4, instances, 0, first slot in the list)
+layout(std430, binding = SSM_BINDING_COMMAND) readonly buffer Commands {
+    uvec4 u_commands[SSM_CLASSES];
+};
 
 uniform vec2 u_light_half;  // half the light's width and height
 uniform vec2 u_ssm_lo;      // soft-shadow-map window at distance 1
@@ -59,10 +67,9 @@ flat out float v_depth_near;  // its nearest micro-patch's distance (merged, lod
 flat out int v_children;      // micro-patches per side merged into it (lod.comp), 1 unmerged
 flat out ivec2 v_texel;       // its (first) occluder texel
 flat out float v_depth;       // its distance from the light
-// A merged block of a tilted surface (a plane, lod.comp): its corners' distances, (x0, y0),
-// (x1, y0), (x1, y1), (x0, y1) of v_rect; v_planar 0 for a patch parallel to the light.
+// A merged block of a tilted surface (class SSM_CLASS_PLANE, lod.comp): its corners'
+// distances, (x0, y0), (x1, y0), (x1, y1), (x0, y1) of v_rect.
 flat out vec4 v_corner_z;
-flat out int v_planar;
 
 // The far side's patch at TEXEL, depth Z, stands for the farthest surface in its texel; where
 // that surface is steep (a box's side wall seen from the light's centre) the patch hovers over
@@ -106,7 +113,7 @@ bool sameObjectBeside(ivec2 t, int w, int e, int id) {
 }
 
 void main() {
-    Patch p = u_patches[gl_InstanceID];
+    Patch p = u_patches[u_commands[PATCH_CLASS].w + uint(gl_InstanceID)];
     uint index = p.texel & ((1u << SSM_LEVEL_SHIFT) - 1u);
     ivec2 texel = ivec2(index % uint(u_map_size), index / uint(u_map_size));
     float width = float(1u << (p.texel >> SSM_LEVEL_SHIFT));  // texels per side
@@ -120,9 +127,8 @@ void main() {
         rect += vec4(-v_sealed.xy, v_sealed.zw) * u_seal * u_occ_texel.xyxy;
     }
     float z = p.z_near;  // the extent of a merged patch's nearest micro-patch
-    v_planar = p.slope_x != 0.0 || p.slope_y != 0.0 ? 1 : 0;
     v_corner_z = vec4(p.z);
-    if (v_planar == 1) {
+    if (PATCH_CLASS == SSM_CLASS_PLANE) {
         // The plane at the (sealed) rectangle's corners, in texels from the block's middle.
         vec4 edge = vec4(-0.5 * width) + vec4(-v_sealed.xy, v_sealed.zw) * u_seal;
         edge.zw += width;

@@ -52,8 +52,9 @@ void Ssm::buildReceiverPlanes(const LightWindow& soft) {
 // order, and makes their count the splat's instance count (no readback): compact.comp's three
 // phases over runs of consecutive texels (count per run, first slot per run, ordered writes).
 void Ssm::compact(const LightWindow& occ, int side) {
-    const DrawCommand reset{4, 0, 0, 0};
-    glNamedBufferSubData(command_.id(), 0, sizeof(reset), &reset);
+    std::array<DrawCommand, ssm::kPatchClasses> reset{};
+    for (auto& r : reset) r = {4, 0, 0, 0};
+    glNamedBufferSubData(command_.id(), 0, sizeof(reset), reset.data());
     const auto& p = compact_program_;
     glUseProgram(p.id());
     glBindTextureUnit(SSM_UNIT_COMPACT_OCCLUDER, patchSource(side).id());
@@ -118,49 +119,49 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
     }
-    const auto& p = splat_program_;
-    glUseProgram(p.id());
+    glBindVertexArray(empty_vao_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+    // patches_buffer_ is bound at SSM_BINDING_PATCHES by the CPU path's readback pass.
+    if (!cpu_path_)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
+                         gpu_patches_[size_t(side)].id());
     glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER, receiver_layers_->depth.id());
     if (clip_) glBindTextureUnit(SSM_UNIT_SPLAT_RECEIVER_MAX, receiver_max_.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_IDS, occluder_maps_[size_t(side)]->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_OCC_DEPTH, occluder_maps_[size_t(side)]->depth.id());
-    gl::setUniform(p, "u_occ_near", occ.near);
-    gl::setUniform(p, "u_occ_range", occ.far - occ.near);
-    gl::setUniform(p, "u_far_side", side > 0 ? 1 : 0);
-    gl::setUniform(p, "u_far_empty", emptyDepth(side));
     glBindTextureUnit(SSM_UNIT_SPLAT_LAYER_IDS, receiver_layers_->ids.id());
     glBindTextureUnit(SSM_UNIT_SPLAT_PLANES, receiver_planes_.id());
-    gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
-    gl::setUniform(p, "u_light_half", 0.5f * light.size);
-    gl::setUniform(p, "u_ssm_lo", soft.lo);
-    gl::setUniform(p, "u_ssm_size", soft.size);
-    gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
-    gl::setUniform(p, "u_receiver_far", soft.far);
-    gl::setUniform(p, "u_receiver_near", soft.near);
-    gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
-    gl::setParamUniforms(p, kSsmParams, params_);      // ssm_size, depth_bias, map_size, seal
-    if (!samples_) gl::setUniform(p, "u_seal", 0.0f);  // the paper's sum counts overlaps twice
-    gl::setUniform(p, "u_occ_lo", occ.lo);
-    gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
-    glBindVertexArray(empty_vao_.id());
-    if (!cpu_path_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
-                         gpu_patches_[size_t(side)].id());
-    // The same micro-patches into each receiver layer's soft shadow map (layered SSM).
-    for (int layer = 0; layer < used_layers_; ++layer) {
-        glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
-        gl::setUniform(p, "u_layer", layer);
-        if (cpu_path_) {
-            // patches_buffer_ is bound at SSM_BINDING_PATCHES by the readback pass.
-            if (!patches_.empty())
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(patches_.size()));
-        } else {
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
-            glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    // Each patch class by its own program from its own range of the list (compact.comp or the
+    // readback), the same micro-patches into each receiver layer's soft shadow map (layered SSM).
+    for (int c = 0; c < ssm::kPatchClasses; ++c) {
+        const auto& p = splat_programs_[size_t(c)];
+        glUseProgram(p.id());
+        gl::setUniform(p, "u_occ_near", occ.near);
+        gl::setUniform(p, "u_occ_range", occ.far - occ.near);
+        gl::setUniform(p, "u_far_side", side > 0 ? 1 : 0);
+        gl::setUniform(p, "u_far_empty", emptyDepth(side));
+        gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+        gl::setUniform(p, "u_light_half", 0.5f * light.size);
+        gl::setUniform(p, "u_ssm_lo", soft.lo);
+        gl::setUniform(p, "u_ssm_size", soft.size);
+        gl::setUniform(p, "u_ssm_texel", soft.size / static_cast<float>(ssm_size_));
+        gl::setUniform(p, "u_receiver_far", soft.far);
+        gl::setUniform(p, "u_receiver_near", soft.near);
+        gl::setUniform(p, "u_receiver_range", soft.far - soft.near);
+        gl::setParamUniforms(p, kSsmParams, params_);      // ssm_size, depth_bias, map_size, seal
+        if (!samples_) gl::setUniform(p, "u_seal", 0.0f);  // the paper's sum counts overlaps twice
+        gl::setUniform(p, "u_occ_lo", occ.lo);
+        gl::setUniform(p, "u_occ_texel", occ.size / static_cast<float>(map_size_));
+        for (int layer = 0; layer < used_layers_; ++layer) {
+            glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
+            gl::setUniform(p, "u_layer", layer);
+            glDrawArraysIndirect(GL_TRIANGLE_STRIP,
+                                 reinterpret_cast<const void*>(sizeof(DrawCommand) * size_t(c)));
         }
     }
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glBindVertexArray(0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glDisable(GL_BLEND);

@@ -1,11 +1,13 @@
 // The paper's CPU path: see micro_patches.h.
 #include "renderer/techniques/ssm/micro_patches.h"
 
+#include <algorithm>
+
 namespace penumbra::techniques::ssm {
 
-void readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
-                      const passes::LightWindow& window, float empty, std::vector<float>& scratch,
-                      std::vector<MicroPatch>& patches) {
+ClassCounts readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
+                             const passes::LightWindow& window, float empty,
+                             std::vector<float>& scratch, std::vector<MicroPatch>& patches) {
     const size_t n = static_cast<size_t>(map_size) * static_cast<size_t>(map_size);
     const bool merged = slopes != nullptr;
     const size_t channels = merged ? 4 : 1;
@@ -29,6 +31,12 @@ void readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int 
         patches.push_back(
             {static_cast<std::uint32_t>(t) | (level << kLevelShift), z, z_near, sx, sy});
     }
+    ClassCounts counts{};
+    for (const auto& p : patches) ++counts[size_t(patchClass(p))];
+    std::stable_sort(patches.begin(), patches.end(), [](const MicroPatch& a, const MicroPatch& b) {
+        return patchClass(a) < patchClass(b);
+    });
+    return counts;
 }
 
 }  // namespace penumbra::techniques::ssm

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -27,12 +28,22 @@ struct MicroPatch {
 static_assert(sizeof(MicroPatch) == 20);
 inline constexpr int kLevelShift = 24;  // maps up to 4096^2 = 2^24 texels
 
-// Reads the MAP_SIZE^2 occluder map SOURCE (window WINDOW) back and appends one micro-patch per
-// texel that is not EMPTY (the cleared depth) to PATCHES (cleared first). SOURCE is the linear
-// depth map, or with SLOPES (merged) lod.comp's map of (depth, level, nearest depth, 0) and
-// SLOPES its planes' slopes.
-void readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
-                      const passes::LightWindow& window, float empty, std::vector<float>& scratch,
-                      std::vector<MicroPatch>& patches);
+// The splat's patch classes (glsl/techniques/ssm/bindings.glsl SSM_CLASS_*), each drawn by its
+// own program from its own range of the list: unmerged, merged at one depth, merged on a plane.
+inline constexpr int kPatchClasses = 3;
+inline int patchClass(const MicroPatch& p) {
+    if ((p.texel >> kLevelShift) == 0) return 0;
+    return p.slope_x == 0.0f && p.slope_y == 0.0f ? 1 : 2;
+}
+using ClassCounts = std::array<std::uint32_t, kPatchClasses>;
+
+// Reads the MAP_SIZE^2 occluder map SOURCE (window WINDOW) back and lists one micro-patch per
+// texel that is not EMPTY (the cleared depth) in PATCHES (cleared first), class by class and in
+// row-major texel order within a class (compact.comp's order); returns each class's count.
+// SOURCE is the linear depth map, or with SLOPES (merged) lod.comp's map of (depth, level,
+// nearest depth, 0) and SLOPES its planes' slopes.
+ClassCounts readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
+                             const passes::LightWindow& window, float empty,
+                             std::vector<float>& scratch, std::vector<MicroPatch>& patches);
 
 }  // namespace penumbra::techniques::ssm

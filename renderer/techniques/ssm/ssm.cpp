@@ -50,9 +50,12 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     if (two_sided_ && second_)
         peel_pass_ = std::make_unique<passes::LightDepthPass>("ssm occluder peel",
                                                               "techniques/ssm/occluder_peel.frag");
-    splat_program_ =
-        gl::buildProgram("ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
-                         {{"CLIP", clip_ ? "1" : "0"}, {"SAMPLES", samples_ ? "1" : "0"}});
+    for (int c = 0; c < ssm::kPatchClasses; ++c)
+        splat_programs_[size_t(c)] = gl::buildProgram(
+            "ssm splat", {"techniques/ssm/splat.vert", "techniques/ssm/splat.frag"},
+            {{"CLIP", clip_ ? "1" : "0"},
+             {"SAMPLES", samples_ ? "1" : "0"},
+             {"PATCH_CLASS", std::to_string(c)}});
     if (samples_) {
         resolve_program_ =
             gl::buildProgram("ssm samples resolve", {"techniques/ssm/samples_resolve.comp"},
@@ -74,11 +77,14 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         compact_run_ = std::max(16, (texels + 65535) / 65536);
         compact_run_count_ = (texels + compact_run_ - 1) / compact_run_;
         compact_runs_ = gl::createBuffer("ssm compaction runs");
-        glNamedBufferStorage(compact_runs_.id(),
-                             GLsizeiptr(sizeof(std::uint32_t)) * compact_run_count_, nullptr, 0);
-        command_ = gl::createBuffer("ssm splat command");
-        glNamedBufferStorage(command_.id(), sizeof(DrawCommand), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        glNamedBufferStorage(
+            compact_runs_.id(),
+            GLsizeiptr(sizeof(std::uint32_t)) * ssm::kPatchClasses * compact_run_count_, nullptr,
+            0);
     }
+    command_ = gl::createBuffer("ssm splat commands");
+    glNamedBufferStorage(command_.id(), sizeof(DrawCommand) * ssm::kPatchClasses, nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
     visibility_program_ = gl::buildProgram(
         "ssm visibility", {"passes/fullscreen.vert", "techniques/ssm/visibility.frag"},
         {{"TWO_SIDED", softMapCount() == 2 ? "1" : "0"}});
@@ -167,8 +173,16 @@ void Ssm::render(frame::FrameContext& ctx) {
             if (!cpu_path_) ctx.pass(sidePass("ssm_compact", side), [&] { compact(occ, side); });
             if (cpu_path_)
                 ctx.pass(sidePass("ssm_readback", side), [&] {
-                    ssm::readMicroPatches(patchSource(side), lod_ ? &lod_slopes_ : nullptr,
-                                          map_size_, occ, emptyDepth(side), scratch_, patches_);
+                    const auto counts =
+                        ssm::readMicroPatches(patchSource(side), lod_ ? &lod_slopes_ : nullptr,
+                                              map_size_, occ, emptyDepth(side), scratch_, patches_);
+                    std::array<DrawCommand, ssm::kPatchClasses> commands{};
+                    std::uint32_t first = 0;
+                    for (size_t c = 0; c < commands.size(); ++c) {
+                        commands[c] = {4, counts[c], 0, first};
+                        first += counts[c];
+                    }
+                    glNamedBufferSubData(command_.id(), 0, sizeof(commands), commands.data());
                     patches_buffer_.upload(std::span<const ssm::MicroPatch>(patches_),
                                            GL_SHADER_STORAGE_BUFFER, SSM_BINDING_PATCHES,
                                            sizeof(ssm::MicroPatch));

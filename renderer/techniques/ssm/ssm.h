@@ -118,7 +118,8 @@ inline int softMapCount(bool two_sided, bool samples) {
 MemoryTerms memoryTerms(const Params& p, std::uint64_t pixels);
 std::string splatLimitError(const Params& p);
 
-// glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches.
+// glDrawArraysIndirect's command: 4 strip vertices, instances = micro-patches of one class, from
+// the list's slot base_instance (read by splat.vert).
 struct DrawCommand {
     std::uint32_t vertices, instances, first, base_instance;
 };
@@ -224,8 +225,8 @@ private:
     int used_layers_ = 0;      // receiver layers holding a receiver (this light)
     int receiver_passes_ = 0;  // geometry passes that built them
     std::unique_ptr<passes::LightDepthPass> depth_pass_;
-    gl::Program splat_program_, visibility_program_, max_program_, compact_program_,
-        planes_program_;
+    std::array<gl::Program, ssm::kPatchClasses> splat_programs_;  // per patch class
+    gl::Program visibility_program_, max_program_, compact_program_, planes_program_;
     gl::Texture receiver_max_;
     gl::Texture receiver_planes_;  // RGBA16F array: the receiver layers' normals
     int receiver_levels_ = 1;
@@ -240,8 +241,8 @@ private:
     gl::Texture lod_slopes_;   // RG32F: per merged block at its first texel its plane's slopes
     int lod_levels_ = 1;
     gl::Buffer counters_;
-    gl::Buffer command_;       // path=gpu: the splat's indirect draw
-    gl::Buffer compact_runs_;  // path=gpu: each run's patch count, then first slot
+    gl::Buffer command_;       // the splat's indirect draw per patch class
+    gl::Buffer compact_runs_;  // path=gpu: each class's and run's patch count, then first slot
     int compact_run_ = 16, compact_run_count_ = 0;  // texels per run, runs (compact.comp)
     std::vector<gl::Buffer> gpu_patches_;           // path=gpu: the micro-patch list of each side
     gl::VertexArray empty_vao_;
