@@ -3,10 +3,19 @@
 // class, search area and (smoothed) level: lit 1 less the light below the receiver's tangent
 // plane, umbra 0, penumbra by back-projection at the level, or at floor and ceiling blended by
 // the fraction (BLEND 1). Diagnostics: level, budget, micro-occluders back-projected, class;
-// Table 2 statistics summed in the Stats buffer.
+// Table 2 statistics summed in the Stats buffer. Two programs (pixel_passes.cpp): COVER 1
+// writes the lit and umbra pixels and discards the penumbra, whose stencil stays 1; COVER 0
+// back-projects where the stencil is 1 alone, as the early test skips the rest (a software
+// rasteriser runs a shader's every branch for every fragment it shades).
 #include "techniques/bitmask/bindings.glsl"
 #include "techniques/bitmask/search.glsl"
 #include "techniques/bitmask/backproject.glsl"
+#ifndef COVER
+#define COVER 0
+#endif
+#if !COVER
+layout(early_fragment_tests) in;
+#endif
 
 layout(binding = BITMASK_UNIT_VISIBILITY_AREA) uniform sampler2D u_area;
 layout(binding = BITMASK_UNIT_VISIBILITY_LOQ) uniform sampler2D u_loq;
@@ -47,6 +56,9 @@ void main() {
         o_visibility.x = litVisibility(horizon);
         return;
     }
+#if COVER
+    discard;  // the penumbra: COVER 0's
+#else
     vec4 area = texelFetch(u_area, pix, 0);
     float level = loq.x;
     int count = 0;
@@ -70,4 +82,5 @@ void main() {
     atomicAdd(s_backprojecting, 1u);
     if (atomicAdd(s_occluders[0], c) + c < c) atomicAdd(s_occluders[1], 1u);
     if (atomicAdd(s_squares[0], c2) + c2 < c2) atomicAdd(s_squares[1], 1u);
+#endif
 }

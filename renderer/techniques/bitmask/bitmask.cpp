@@ -104,6 +104,10 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     visibility_ =
         gl::buildProgram("bitmask visibility",
                          {"passes/fullscreen.vert", "techniques/bitmask/visibility.frag"}, defines);
+    defines.push_back({"COVER", "1"});
+    visibility_cover_ =
+        gl::buildProgram("bitmask visibility cover",
+                         {"passes/fullscreen.vert", "techniques/bitmask/visibility.frag"}, defines);
     stats_ = gl::createBuffer("bitmask statistics");
     glNamedBufferStorage(stats_.id(), 6 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }

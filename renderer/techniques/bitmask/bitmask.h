@@ -165,6 +165,7 @@ private:
     gl::Texture receives_, samples_, edges_, budget_texture_;
     gl::Buffer masks_;  // the half-plane tables
     gl::Program classify_, smooth_program_, visibility_;
+    gl::Program visibility_cover_;  // visibility.frag's COVER 1: the lit and umbra pixels
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;
 };

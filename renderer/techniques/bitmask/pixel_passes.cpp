@@ -69,38 +69,58 @@ void Bitmask::smoothLoq(frame::FrameContext& ctx) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+// Two draws: the cover program writes the lit and umbra pixels (stencil 0) and discards the
+// penumbra (stencil left 1); the back-projecting program runs where the stencil is 1 only.
+// The same image as one program for all: on llvmpipe, which runs a shader's every branch for
+// every fragment, the back-projection's code no longer runs for the pixels that skip it.
 void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                          const passes::LightWindow& window) {
-    ctx.bindOutput();
+    const GLuint output = ctx.bindOutput();
+    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, targets_->stencil().id(), 0);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    const auto& p = visibility_;
-    glUseProgram(p.id());
-    bindSearch(ctx, p, light, window);
-    if (use_bitmask_) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_MASKS, masks_.id());
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_SAMPLES, samples_.id());
-        gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
-        gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
+    const GLint one = 1;
+    glClearBufferiv(GL_STENCIL, 0, &one);
+    glEnable(GL_STENCIL_TEST);
+    for (const gl::Program* program : {&visibility_cover_, &visibility_}) {
+        const auto& p = *program;
+        if (&p == &visibility_cover_) {
+            glStencilFunc(GL_ALWAYS, 0, 0xff);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        } else {
+            glStencilFunc(GL_EQUAL, 1, 0xff);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        }
+        glUseProgram(p.id());
+        bindSearch(ctx, p, light, window);
+        if (use_bitmask_) {
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_MASKS,
+                             masks_.id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_SAMPLES, samples_.id());
+            gl::setUniform(p, "u_mask_resolution", bitmask::kTableResolution);
+            gl::setUniform(p, "u_sample_count", static_cast<float>(bits_));
+        }
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_AREA, targets_->area().id());
+        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_LOQ, targets_->loq(0).id());
+        if (microquads_) {
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_EDGES, edges_.id());
+            gl::setUniform(p, "u_edge_angles", bitmask::kEdgeAngles);
+            gl::setUniform(p, "u_edge_offsets", bitmask::kEdgeOffsets);
+        }
+        if (microrects_) {
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_EXTENT, rects_->extent().id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
+        }
+        if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
+        if (far_rects_) {
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT, far_rects_->extent().id());
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH, far_rects_->depth().id());
+        }
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_STATS, stats_.id());
+        fullscreen_.draw();
     }
-    glBindTextureUnit(BITMASK_UNIT_VISIBILITY_AREA, targets_->area().id());
-    glBindTextureUnit(BITMASK_UNIT_VISIBILITY_LOQ, targets_->loq(0).id());
-    if (microquads_) {
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_EDGES, edges_.id());
-        gl::setUniform(p, "u_edge_angles", bitmask::kEdgeAngles);
-        gl::setUniform(p, "u_edge_offsets", bitmask::kEdgeOffsets);
-    }
-    if (microrects_) {
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_EXTENT, rects_->extent().id());
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
-    }
-    if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
-    if (far_rects_) {
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT, far_rects_->extent().id());
-        glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH, far_rects_->depth().id());
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_STATS, stats_.id());
-    fullscreen_.draw();
+    glDisable(GL_STENCIL_TEST);
+    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
 }
