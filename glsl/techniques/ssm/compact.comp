@@ -35,8 +35,9 @@ layout(std430, binding = SSM_BINDING_PATCHES) writeonly buffer Patches {
 layout(std430, binding = SSM_BINDING_COMMAND) buffer Commands {
     uvec4 u_commands[SSM_CLASSES];
 };
-// Per class and run (class-major): its patch count (phase 0), then its first slot (phase 1)
-layout(std430, binding = SSM_BINDING_RUNS) buffer Runs {
+// Per class and run (class-major): its patch count (phase 0), then its first slot (phase 1);
+// coherent: phase 1's first invocation reads the slots the others wrote (memoryBarrierBuffer)
+layout(std430, binding = SSM_BINDING_RUNS) coherent buffer Runs {
     uint u_runs_slot[];
 };
 
