@@ -91,7 +91,8 @@ void addQuad(vec3 p) {
         vec2 onto = p.xy + (uv[k] * z - p.xy) * (p.z / (p.z - z));
         c[k] = (onto + u_light_half) / (2.0 * u_light_half);
     }
-    for (int k = 0; k < 4; ++k) twice_area += c[k].x * c[(k + 1) & 3].y - c[k].y * c[(k + 1) & 3].x;
+    for (int k = 0; k < 4; ++k)
+        twice_area += c[k].x * c[(k + 1) & 3].y - c[k].y * c[(k + 1) & 3].x;
     if (twice_area == 0.0) return;
     float turn = sign(twice_area);  // counter-clockwise edges keep the inside on their left
     // Per edge: inside where f(j) + g i >= 0, f(j) = f0 + df j (sample (0, j) at
@@ -217,6 +218,9 @@ void main() {
     // face in front of its steep lit wall striped the wall (random scene rand20: 0.31).
     bool own = u_layer_count > 1 && texelFetch(u_layer_ids, ivec3(texel, u_layer), 0).r == v_object;
 #if SAMPLES
+    // The samples hidden here so far: a snapshot, but bits are only ever set, so a patch whose
+    // samples are all among them adds nothing (no atomic), and a texel that hides the whole
+    // light is done (7 % less splat on rand3001 at 320x240).
     uint have[SSM_SAMPLE_WORDS];
     uint all = ~0u;
     for (int w = 0; w < SSM_SAMPLE_WORDS; ++w) {
