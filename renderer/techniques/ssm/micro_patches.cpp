@@ -1,8 +1,6 @@
 // The paper's CPU path: see micro_patches.h.
 #include "renderer/techniques/ssm/micro_patches.h"
 
-#include <algorithm>
-
 namespace penumbra::techniques::ssm {
 
 ClassCounts readMicroPatches(const gl::Texture& source, const gl::Texture* slopes, int map_size,
@@ -31,11 +29,14 @@ ClassCounts readMicroPatches(const gl::Texture& source, const gl::Texture* slope
         patches.push_back(
             {static_cast<std::uint32_t>(t) | (level << kLevelShift), z, z_near, sx, sy});
     }
+    // Class by class, each in texel order: every patch at its class's next slot.
     ClassCounts counts{};
     for (const auto& p : patches) ++counts[size_t(patchClass(p))];
-    std::stable_sort(patches.begin(), patches.end(), [](const MicroPatch& a, const MicroPatch& b) {
-        return patchClass(a) < patchClass(b);
-    });
+    ClassCounts next{};
+    for (size_t c = 1; c < next.size(); ++c) next[c] = next[c - 1] + counts[c - 1];
+    std::vector<MicroPatch> listed(patches.size());
+    for (const auto& p : patches) listed[next[size_t(patchClass(p))]++] = p;
+    patches.swap(listed);
     return counts;
 }
 
