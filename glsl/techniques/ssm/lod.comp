@@ -113,7 +113,11 @@ void main() {
         if (b.w == 0.0 || !wanted(level, d)) continue;
         vec2 slopes = vec2(0.0);
         float nearest = b.x;
-        if (u_planar == 1) {
+        // A block whose depths span little stays at its middle depth even with u_planar (the
+        // splat's one-depth program is cheaper, its own-object rows especially); the plane
+        // only where the span is wider.
+        bool thin = (b.y - b.x) * u_occ_range <= u_lod_depth * (u_occ_near + b.x * u_occ_range);
+        if (u_planar == 1 && !thin) {
             // The plane's middle, and its nearest corner where that is nearer than the nearest
             // micro-patch's middle (the splat's extent starts there).
             vec3 plane = blockPlane(level, p >> level);
