@@ -35,6 +35,12 @@ uniform int u_planar;
 
 const vec4 kNotMergeable = vec4(2.0, -1.0, -1.0, 0.0);
 
+// Whether the depths of block M (nearest, farthest, ...) span at most u_lod_depth of the
+// nearest one's distance.
+bool spansLittle(vec4 m) {
+    return (m.y - m.x) * u_occ_range <= u_lod_depth * (u_occ_near + m.x * u_occ_range);
+}
+
 float distanceAt(ivec2 t) { return u_occ_near + texelFetch(u_depth, t, 0).r * u_occ_range; }
 
 // The plane of block B of LEVEL through its four corner micro-patches (least squares), as
@@ -77,9 +83,7 @@ vec4 reduce(ivec2 p) {
     }
     if (m.w == 0.0) return kNotMergeable;
     if (u_planar == 1) return nearPlane(u_level, p, blockPlane(u_level, p)) ? m : kNotMergeable;
-    if ((m.y - m.x) * u_occ_range > u_lod_depth * (u_occ_near + m.x * u_occ_range))
-        return kNotMergeable;
-    return m;
+    return spansLittle(m) ? m : kNotMergeable;
 }
 
 // Whether a block of LEVEL at depth D (linear) is small against its penumbra: the quad grows
@@ -116,8 +120,7 @@ void main() {
         // A block whose depths span little stays at its middle depth even with u_planar (the
         // splat's one-depth program is cheaper, its own-object rows especially); the plane
         // only where the span is wider.
-        bool thin = (b.y - b.x) * u_occ_range <= u_lod_depth * (u_occ_near + b.x * u_occ_range);
-        if (u_planar == 1 && !thin) {
+        if (u_planar == 1 && !spansLittle(b)) {
             // The plane's middle, and its nearest corner where that is nearer than the nearest
             // micro-patch's middle (the splat's extent starts there).
             vec3 plane = blockPlane(level, p >> level);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "glsl/techniques/ssm/bindings.glsl"
 #include "renderer/gl/handles.h"
 #include "renderer/passes/light_windows.h"
 
@@ -30,10 +31,10 @@ inline constexpr int kLevelShift = 24;  // maps up to 4096^2 = 2^24 texels
 
 // The splat's patch classes (glsl/techniques/ssm/bindings.glsl SSM_CLASS_*), each drawn by its
 // own program from its own range of the list: unmerged, merged at one depth, merged on a plane.
-inline constexpr int kPatchClasses = 3;
+inline constexpr int kPatchClasses = SSM_CLASSES;
 inline int patchClass(const MicroPatch& p) {
-    if ((p.texel >> kLevelShift) == 0) return 0;
-    return p.slope_x == 0.0f && p.slope_y == 0.0f ? 1 : 2;
+    if ((p.texel >> kLevelShift) == 0) return SSM_CLASS_MICRO;
+    return p.slope_x == 0.0f && p.slope_y == 0.0f ? SSM_CLASS_FLAT : SSM_CLASS_PLANE;
 }
 using ClassCounts = std::array<std::uint32_t, kPatchClasses>;
 
