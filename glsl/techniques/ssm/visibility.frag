@@ -14,6 +14,15 @@
 #ifndef TWO_SIDED
 #define TWO_SIDED 0
 #endif
+// COVER 1: the cover pass (soft_shadow_lookup.cpp) writes the pixels whose bilinear texels hide
+// nothing in any layer and whose own object's layer matches at once, and discards the others
+// for the full program (llvmpipe runs every inlined branch of a shader for every fragment).
+#ifndef COVER
+#define COVER 0
+#endif
+#if !COVER
+layout(early_fragment_tests) in;  // the stencil left 1 by the cover pass, tested before
+#endif
 #include "common/caster_flags.glsl"
 #include "common/geometric_normal.glsl"
 #include "common/light_horizon.glsl"
@@ -93,49 +102,64 @@ bool layeredOcclusion(vec2 uv, float dp, float tol, int own, out float occlusion
     return weights > 0.0;
 }
 
+// Whether any of the bilinear texels at UV hides some of the light in any layer.
+bool anyOcclusion(vec2 uv) {
+    ivec2 res = textureSize(u_ssm, 0).xy;
+    ivec2 base = ivec2(floor(uv * vec2(res) - 0.5));
+    float most = 0.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            ivec2 q = clamp(base + ivec2(x, y), ivec2(0), res - 1);
+            for (int k = 0; k < u_layer_count; ++k) most = max(most, occlusionOf(k, q));
+        }
+    return most > 0.0;
+}
+
 // The share of the light above the tangent plane of P (unit normal N).
 float shareAboveHorizon(vec3 p, vec3 n) {
     return centredLightShareAboveHorizon(u_light_centre, u_light_right, u_light_up, u_light_size,
                                          p, n);
 }
 
-void main() {
-    ivec2 pix = ivec2(gl_FragCoord.xy);
-    vec4 pos = texelFetch(u_position, pix, 0);
-    if (pos.w == 0.0) discard;
-    o_visibility = vec4(1.0, 0.0, 0.0, 0.0);
-    o_occlusion = vec4(0.0);
-    o_layer = vec4(-1.0, 0.0, 0.0, 0.0);
-    int id = texelFetch(u_id, pix, 0).r;
+// The pixel's visibility V before its horizon, the receiver layer it took (-1: none) and whether
+// the light's share above its horizon multiplies V; false where the pixel is settled elsewhere
+// (COVER 1: by the full program, which the discard leaves it to).
+bool receiverVisibility(ivec2 pix, vec3 pos, vec3 n, int id, out float v, out int layer,
+                        out bool horizon) {
+    v = 1.0;
+    layer = -1;
+    horizon = false;
     if (u_shadowed == 0 || id < 0 || texelFetch(u_receives, ivec2(id, 0), 0).r < 0.5) {
         // No caster shadows it, but an object that casts hides from itself the light's part
         // below its surface's horizon (role `occluder`, or nothing shadowed), as every
         // technique's casters do.
-        if (id >= 0 && objectCasts(id)) {
-            float share = shareAboveHorizon(pos.xyz, geometricNormal(pix));
-            o_visibility = vec4(share, 0.0, 0.0, 0.0);
-            o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
-        }
-        return;
+        horizon = id >= 0 && objectCasts(id);
+        return true;
     }
-    vec3 d = pos.xyz - u_light_centre;
+    vec3 d = pos - u_light_centre;
     float z = dot(d, u_light_forward);
-    if (z <= 0.0) return;
+    if (z <= 0.0) return true;
     vec2 uv = (vec2(dot(d, u_light_right), dot(d, u_light_up)) / z - u_ssm_lo) / u_ssm_size;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return true;
     float occlusion;
-    int layer = 0;
     if (u_layer_count == 1) {
         // The paper: one receiver map, looked up without a depth match.
         occlusion = texture(u_ssm, vec3(uv, 0.0)).r;
 #if TWO_SIDED
         occlusion = max(occlusion, texture(u_ssm_back, vec3(uv, 0.0)).r);
 #endif
+        layer = 0;
     } else {
         // Match within 8 soft-map texels of the receiver's slope-free footprint plus the bias.
         float texel = max(u_ssm_size.x, u_ssm_size.y) / float(textureSize(u_ssm, 0).x) * z;
         float tol = (8.0 * texel + u_depth_bias * z) / u_range;
         float dp = (z - u_near) / u_range;
+#if COVER
+        // Unoccluded here: the full program's first match gives its layer and an occlusion of
+        // 0, and every later way would give 0 too; else the full program decides.
+        if (anyOcclusion(uv) || !layeredOcclusion(uv, dp, tol, id, occlusion, layer))
+            return false;
+#else
         // Layers of the pixel's own object first: another object's layer at its depth can lie
         // in the pixel's object's own shadow (where a steep wall meets the floor, the floor's
         // layer matched the wall's foot and darkened it). A surface facing away from the
@@ -145,8 +169,7 @@ void main() {
         // that cast: a receiver hides nothing, not even from itself (exact's rays pass through
         // it), so its pixels facing away match as light-facing ones (a wall between the light
         // and the camera took 0 where no layer of its own matched: mix34).
-        vec3 n = geometricNormal(pix);
-        vec3 to_light = u_light_centre - pos.xyz;
+        vec3 to_light = u_light_centre - pos;
         bool casts = objectCasts(id);
         bool away = casts && dot(n, to_light) <= 0.0;
         // Where none of its own matches, its own within the depth its surface spans over two
@@ -174,23 +197,42 @@ void main() {
                 }
             }
             if (away || nearest < 0) {
-                float share = casts ? shareAboveHorizon(pos.xyz, n) : 1.0;  // a receiver: all
-                o_visibility = vec4(share, 0.0, 0.0, 0.0);
-                o_occlusion = vec4(1.0 - share, 0.0, 0.0, 0.0);
-                return;
+                layer = -1;  // (a match of weight 0 may have named one)
+                horizon = casts;  // a receiver: all of the light
+                return true;
             }
             occlusion = occlusionOf(nearest, q);
             layer = nearest;
         }
+#endif
     }
-    float v = 1.0 - clamp(occlusion, 0.0, 1.0);
-    if (u_self_horizon != 0 && objectCasts(id)) {
-        // An object's patches never shadow the surface they lie on (splat.vert): the light's
-        // part below that surface's horizon, which the object itself hides, is taken here, in
-        // closed form, as css does; the other casters' occlusion falls on the rest alike.
-        v *= shareAboveHorizon(pos.xyz, geometricNormal(pix));
+    v = 1.0 - clamp(occlusion, 0.0, 1.0);
+    // An object's patches never shadow the surface they lie on (splat.vert): the light's part
+    // below that surface's horizon, which the object itself hides, is taken in closed form, as
+    // css does; the other casters' occlusion falls on the rest alike.
+    horizon = u_self_horizon != 0 && objectCasts(id);
+    return true;
+}
+
+void main() {
+    ivec2 pix = ivec2(gl_FragCoord.xy);
+    vec4 pos = texelFetch(u_position, pix, 0);
+    // Outside every object: the values the pass clears to (the cover settles it)
+    float v = 0.0;
+    int layer = -1;
+    if (pos.w != 0.0) {
+        bool horizon;
+        vec3 n = geometricNormal(pix);
+        if (!receiverVisibility(pix, pos.xyz, n, texelFetch(u_id, pix, 0).r, v, layer, horizon))
+            discard;
+        // One call site: a software rasteriser runs every inlined copy for every fragment.
+        if (horizon) v *= shareAboveHorizon(pos.xyz, n);
     }
+#if !COVER
+    else
+        discard;  // settled by the cover
+#endif
     o_visibility = vec4(v, 0.0, 0.0, 0.0);
-    o_occlusion = vec4(1.0 - v, 0.0, 0.0, 0.0);
+    o_occlusion = vec4(pos.w != 0.0 ? 1.0 - v : 0.0, 0.0, 0.0, 0.0);
     o_layer = vec4(float(layer), 0.0, 0.0, 0.0);
 }

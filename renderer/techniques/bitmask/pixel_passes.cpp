@@ -3,6 +3,7 @@
 // visibility by back-projection, and the statistics of Table 2 (see bitmask.h).
 #include "glsl/techniques/bitmask/bindings.glsl"
 #include "renderer/gl/param_uniforms.h"
+#include "renderer/passes/cover_stencil.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/techniques/bitmask/bitmask.h"
 #include "renderer/techniques/bitmask/mask_textures.h"
@@ -69,8 +70,8 @@ void Bitmask::smoothLoq(frame::FrameContext& ctx) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// Two draws: the cover program writes the lit and umbra pixels (stencil 0) and discards the
-// penumbra (stencil left 1); the back-projecting program runs where the stencil is 1 only.
+// Two draws (passes::drawCovered): the cover program writes the lit and umbra pixels and
+// discards the penumbra; the back-projecting program runs on the penumbra only.
 // The same image as one program for all: on llvmpipe, which runs a shader's every branch for
 // every fragment, the back-projection's code no longer runs for the pixels that skip it.
 void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
@@ -79,18 +80,7 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
     glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, targets_->stencil().id(), 0);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    const GLint one = 1;
-    glClearBufferiv(GL_STENCIL, 0, &one);
-    glEnable(GL_STENCIL_TEST);
-    for (const gl::Program* program : {&visibility_cover_, &visibility_}) {
-        const auto& p = *program;
-        if (&p == &visibility_cover_) {
-            glStencilFunc(GL_ALWAYS, 0, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        } else {
-            glStencilFunc(GL_EQUAL, 1, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        }
+    auto draw = [&](const gl::Program& p) {
         glUseProgram(p.id());
         bindSearch(ctx, p, light, window);
         if (use_bitmask_) {
@@ -118,9 +108,9 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
         }
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BITMASK_BINDING_VISIBILITY_STATS, stats_.id());
         fullscreen_.draw();
-    }
-    glDisable(GL_STENCIL_TEST);
-    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+    };
+    passes::drawCovered([&] { draw(visibility_cover_); }, [&] { draw(visibility_); });
+    passes::CoverStencil::detach(output);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
 }

@@ -14,6 +14,7 @@
 #include "glsl/techniques/css/bindings.glsl"
 #include "renderer/gl/param_uniforms.h"
 #include "renderer/passes/bindings.h"
+#include "renderer/passes/cover_stencil.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/shadow_maps.h"
 #include "renderer/techniques/css/csm_maps.h"
@@ -140,16 +141,8 @@ private:
                      const gl::Program& evaluate, const scene::RectLight& light,
                      const passes::LightWindow& w, const css::DepthRange& range,
                      CsmMaps::Filter filter) {
-        const GLint one = 1;
-        glClearBufferiv(GL_STENCIL, 0, &one);
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        draw(ctx, cover, light, w, range, filter);
-        glStencilFunc(GL_EQUAL, 1, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        draw(ctx, evaluate, light, w, range, filter);
-        glDisable(GL_STENCIL_TEST);
+        passes::drawCovered([&] { draw(ctx, cover, light, w, range, filter); },
+                            [&] { draw(ctx, evaluate, light, w, range, filter); });
     }
 
     void visibility(frame::FrameContext& ctx, const scene::RectLight& light,

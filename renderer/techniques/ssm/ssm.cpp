@@ -85,9 +85,11 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     command_ = gl::createBuffer("ssm splat commands");
     glNamedBufferStorage(command_.id(), sizeof(DrawCommand) * ssm::kPatchClasses, nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
-    visibility_program_ = gl::buildProgram(
-        "ssm visibility", {"passes/fullscreen.vert", "techniques/ssm/visibility.frag"},
-        {{"TWO_SIDED", softMapCount() == 2 ? "1" : "0"}});
+    for (const bool cover : {false, true})
+        (cover ? visibility_cover_ : visibility_program_) = gl::buildProgram(
+            cover ? "ssm visibility cover" : "ssm visibility",
+            {"passes/fullscreen.vert", "techniques/ssm/visibility.frag"},
+            {{"TWO_SIDED", softMapCount() == 2 ? "1" : "0"}, {"COVER", cover ? "1" : "0"}});
     occluder_maps_.clear();
     soft_maps_.clear();
     const GLenum format = fp16_ ? GL_R16F : GL_R32F;

@@ -11,6 +11,7 @@
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/cover_stencil.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/passes/light_windows.h"
@@ -227,6 +228,9 @@ private:
     std::unique_ptr<passes::LightDepthPass> depth_pass_;
     std::array<gl::Program, ssm::kPatchClasses> splat_programs_;  // per patch class
     gl::Program visibility_program_, max_program_, compact_program_, planes_program_;
+    // The visibility pass's cover (COVER 1: the pixels it settles) and its stencil
+    gl::Program visibility_cover_;
+    passes::CoverStencil visibility_stencil_{"ssm visibility cover"};
     gl::Texture receiver_max_;
     gl::Texture receiver_planes_;  // RGBA16F array: the receiver layers' normals
     int receiver_levels_ = 1;
