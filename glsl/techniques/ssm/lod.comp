@@ -4,11 +4,15 @@
 // grows by at least u_lod times that width, so a huge quad is splatted once for many patches.
 // With u_planar a block merges where its micro-patches lie near one plane (a tilted surface),
 // not only near one depth: the merged patch is that plane, its corners at their own depths.
-// u_phase 0: pyramid level 0 from the occluder map; 1: level u_level from the one below;
+// LOD_PHASE 0: pyramid level 0 from the occluder map; 1: level u_level from the one below;
 // 2: the splat's map, each merged block's middle depth at its first texel (the rest empty), its
 // level and its nearest depth, and its plane's slopes, read by compact.comp and by the CPU path
-// alike.
+// alike. A program per phase (lod.cpp): a software rasteriser runs every phase's inlined code for
+// every invocation otherwise.
 #include "techniques/ssm/bindings.glsl"
+#ifndef LOD_PHASE
+#define LOD_PHASE 0
+#endif
 layout(local_size_x = 8, local_size_y = 8) in;
 // Linear depth in [0, 1] of the window, and the object ids
 layout(binding = SSM_UNIT_LOD_DEPTH) uniform sampler2D u_depth;
@@ -19,7 +23,6 @@ layout(rgba32f, binding = SSM_IMAGE_LOD_LEVEL) uniform writeonly image2D u_level
 layout(rgba32f, binding = SSM_IMAGE_LOD_PATCHES) uniform writeonly image2D u_patches_out;
 // Per merged block at its first texel: its plane's slopes of 1 / distance per texel in x and y
 layout(rg32f, binding = SSM_IMAGE_LOD_SLOPES) uniform writeonly image2D u_slopes_out;
-uniform int u_phase;
 uniform int u_level;    // phase 1: the level built; phase 2: the highest level
 uniform float u_empty;  // the cleared depth: 1 (nearest map) or 0 (farthest map)
 uniform float u_occ_near;
@@ -96,18 +99,15 @@ bool wanted(int level, float d) {
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (u_phase == 0) {
-        if (any(greaterThanEqual(p, textureSize(u_depth, 0)))) return;
-        float d = texelFetch(u_depth, p, 0).r;
-        float id = float(texelFetch(u_ids, p, 0).r);
-        imageStore(u_level_out, p, d == u_empty ? kNotMergeable : vec4(d, d, id, 1.0));
-        return;
-    }
-    if (u_phase == 1) {
-        if (any(greaterThanEqual(p, imageSize(u_level_out)))) return;
-        imageStore(u_level_out, p, reduce(p));
-        return;
-    }
+#if LOD_PHASE == 0
+    if (any(greaterThanEqual(p, textureSize(u_depth, 0)))) return;
+    float d = texelFetch(u_depth, p, 0).r;
+    float id = float(texelFetch(u_ids, p, 0).r);
+    imageStore(u_level_out, p, d == u_empty ? kNotMergeable : vec4(d, d, id, 1.0));
+#elif LOD_PHASE == 1
+    if (any(greaterThanEqual(p, imageSize(u_level_out)))) return;
+    imageStore(u_level_out, p, reduce(p));
+#else
     if (any(greaterThanEqual(p, textureSize(u_depth, 0)))) return;
     // The highest level whose block holding P is mergeable and wanted: the same for every
     // texel of that block, since they share its ancestors.
@@ -138,4 +138,5 @@ void main() {
     float d = texelFetch(u_depth, p, 0).r;
     imageStore(u_patches_out, p, vec4(d, 0.0, d, 0.0));
     imageStore(u_slopes_out, p, vec4(0.0));
+#endif
 }

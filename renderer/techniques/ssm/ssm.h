@@ -238,7 +238,7 @@ private:
     std::vector<std::unique_ptr<SoftShadowTarget>> soft_maps_;
     std::unique_ptr<ssm::ReceiverLayers> receiver_layers_;
     gl::Texture receives_;
-    gl::Program lod_program_;
+    std::array<gl::Program, 3> lod_programs_;  // per phase of lod.comp
     gl::Texture lod_pyramid_;  // RGBA32F mips: per block nearest, farthest depth, id, mergeable
     gl::Texture lod_patches_;  // RGBA32F: per merged block at its first texel middle depth, level,
                                // nearest depth
