@@ -43,6 +43,9 @@
 #define SSM_UNIT_SPLAT_OCC_DEPTH 10  // the side's linear occluder depth (merged patches)
 #define SSM_IMAGE_SPLAT_MASKS 0      // accumulate=samples: the light-sample masks
 #define SSM_SAMPLE_WORDS 8           // their 32-bit words per texel (ssm.h kSampleWords)
+// splat_done.frag (the splat's stencil of finished texels)
+#define SSM_UNIT_DONE_RECEIVER 1
+#define SSM_IMAGE_DONE_MASKS 0
 // samples_resolve.comp
 #define SSM_IMAGE_RESOLVE_MASKS 0
 #define SSM_IMAGE_RESOLVE_TARGET 1

@@ -13,6 +13,8 @@
 #ifndef PATCH_CLASS
 #define PATCH_CLASS SSM_CLASS_MICRO
 #endif
+// The stencil of texels with nothing left to add (splat_done.frag), tested before the shader runs
+layout(early_fragment_tests) in;
 // Linear receiver depth, 1 = none
 layout(binding = SSM_UNIT_SPLAT_RECEIVER) uniform sampler2DArray u_receiver;
 uniform int u_layer;  // the receiver layer splatted into

@@ -100,6 +100,35 @@ void Ssm::resolveSamples() {
     glUseProgram(0);
 }
 
+void Ssm::markDoneTexels(bool first) {
+    const SoftShadowTarget& target = *soft_maps_[0];
+    if (first) {
+        const GLint zero = 0;
+        for (int layer = 0; layer < used_layers_; ++layer)
+            glClearNamedFramebufferiv(target.fbos[size_t(layer)].id(), GL_STENCIL, 0, &zero);
+    } else if (!samples_) {
+        return;  // no receiver: as marked first
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    const auto& p = done_program_;
+    glUseProgram(p.id());
+    glBindTextureUnit(SSM_UNIT_DONE_RECEIVER, receiver_layers_->depth.id());
+    if (samples_)
+        glBindImageTexture(SSM_IMAGE_DONE_MASKS, sample_masks_.id(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                           GL_R32UI);
+    for (int layer = 0; layer < used_layers_; ++layer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbos[size_t(layer)].id());
+        gl::setUniform(p, "u_layer", layer);
+        fullscreen_.draw();
+    }
+    glStencilFunc(GL_NOTEQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (!samples_) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 // Adds every micro-patch's occlusion of side SIDE into its soft shadow map (accumulate=area),
 // or its light samples into the texels' sample masks (accumulate=samples).
 void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const LightWindow& soft,
@@ -110,8 +139,6 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glDisable(GL_CULL_FACE);
     if (samples_) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glBindImageTexture(SSM_IMAGE_SPLAT_MASKS, sample_masks_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
-                           GL_R32UI);
     } else {
         const float zero[4] = {0, 0, 0, 0};
         for (const auto& fbo : target.fbos) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
@@ -119,7 +146,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
     }
-    glBindVertexArray(empty_vao_.id());
+    glEnable(GL_STENCIL_TEST);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COMMAND, command_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
     // patches_buffer_ is bound at SSM_BINDING_PATCHES by the CPU path's readback pass.
@@ -135,6 +162,14 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_BINDING_COUNTERS, counters_.id());
     // Each patch class by its own program from its own range of the list (compact.comp or the
     // readback), the same micro-patches into each receiver layer's soft shadow map (layered SSM).
+    // Texels with nothing left to add are skipped before the splat's shader runs: no receiver,
+    // or every sample hidden by the sides before (marks between the classes of a side gained
+    // nothing measurable: rand3001 front 944 -> 948 ms at 320x240).
+    markDoneTexels(side == 0);
+    if (samples_)
+        glBindImageTexture(SSM_IMAGE_SPLAT_MASKS, sample_masks_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           GL_R32UI);
+    glBindVertexArray(empty_vao_.id());
     for (int c = 0; c < ssm::kPatchClasses; ++c) {
         const auto& p = splat_programs_[size_t(c)];
         glUseProgram(p.id());
@@ -164,6 +199,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glBindVertexArray(0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glUseProgram(0);

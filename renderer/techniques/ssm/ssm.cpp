@@ -100,6 +100,19 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         soft_maps_.push_back(std::make_unique<SoftShadowTarget>(
             ssm_size_, layers_, format,
             side ? "ssm soft shadow maps (back)" : "ssm soft shadow maps"));
+    // The splat's stencil of finished texels, one layer per receiver layer, on every soft map.
+    done_program_ = gl::buildProgram("ssm splat done",
+                                     {"passes/fullscreen.vert", "techniques/ssm/splat_done.frag"},
+                                     {{"SAMPLES", samples_ ? "1" : "0"}});
+    splat_stencil_ = gl::createTexture2DArray(GL_DEPTH24_STENCIL8, ssm_size_, ssm_size_, layers_,
+                                              "ssm splat stencil");
+    for (const auto& target : soft_maps_)
+        for (int k = 0; k < layers_; ++k) {
+            const auto& fbo = target->fbos[size_t(k)];
+            glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT,
+                                           splat_stencil_.id(), 0, k);
+            passes::checkFramebuffer(fbo, "ssm soft shadow map with the splat's stencil");
+        }
     receiver_layers_ = std::make_unique<ssm::ReceiverLayers>(
         ssm_size_, layers_, ssm::ReceiverLayers::buildFor(scene.objects().size()),
         "ssm receiver layers");
