@@ -44,6 +44,7 @@ layout(binding = SSM_UNIT_SPLAT_RECEIVER_MAX) uniform sampler2DArray u_receiver_
 #endif
 uniform float u_receiver_near;
 uniform float u_receiver_range;
+uniform float u_depth_bias;  // splat.frag's: a patch must be this fraction of z_R nearer
 
 // Self-shadowing (several receiver layers): the object of each occluder texel; splat.frag lets a
 // patch shadow its own object only above that surface's tangent plane.
@@ -166,14 +167,20 @@ void main() {
     ndc = (extent - u_ssm_lo.xyxy) / u_ssm_size.xyxy * 2.0 - 1.0;
     px = clamp((ndc * 0.5 + 0.5) * float(u_ssm_res), 0.0, float(u_ssm_res));
 #endif
+    v_reach = u_far_side == 1 && u_far_reach > 0.0 ? reach(texel, p.z) : 0.0;
+    // The quad's depth: the receiver depth (normalised, as the depth buffer holds each layer's,
+    // micro_patch_splat.cpp) at or in front of which splat.frag discards (receiver not behind
+    // the patch by the bias and its reach), less a margin for the 24-bit depth buffer, so that
+    // the early depth test drops only fragments the shader would drop.
+    float behind = (p.z_near + v_reach) / (1.0 - u_depth_bias);
+    float at = clamp((behind - u_receiver_near) / u_receiver_range - 1e-5, 0.0, 1.0);
     vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
-    gl_Position = vec4(mix(ndc.xy, ndc.zw, corner), 0.0, 1.0);
+    gl_Position = vec4(mix(ndc.xy, ndc.zw, corner), 2.0 * at - 1.0, 1.0);
     v_rect = rect;
     v_depth = p.z;
     v_depth_near = p.z_near;
     v_children = int(width);
     v_texel = texel;
-    v_reach = u_far_side == 1 && u_far_reach > 0.0 ? reach(texel, p.z) : 0.0;
     v_object = texelFetch(u_occ_ids, texel, 0).r;
     if (gl_VertexID == 0) {
         if (u_layer == 0) atomicAdd(u_micro_patches, 1u);

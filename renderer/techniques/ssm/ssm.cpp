@@ -101,9 +101,11 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
             ssm_size_, layers_, format,
             side ? "ssm soft shadow maps (back)" : "ssm soft shadow maps"));
     // The splat's stencil of finished texels, one layer per receiver layer, on every soft map.
-    done_program_ = gl::buildProgram("ssm splat done",
-                                     {"passes/fullscreen.vert", "techniques/ssm/splat_done.frag"},
-                                     {{"SAMPLES", samples_ ? "1" : "0"}});
+    for (const bool fill : {false, true})
+        (fill ? fill_depth_program_ : done_program_) =
+            gl::buildProgram(fill ? "ssm splat depth" : "ssm splat done",
+                             {"passes/fullscreen.vert", "techniques/ssm/splat_done.frag"},
+                             {{"SAMPLES", samples_ ? "1" : "0"}, {"FILL_DEPTH", fill ? "1" : "0"}});
     splat_stencil_ = gl::createTexture2DArray(GL_DEPTH24_STENCIL8, ssm_size_, ssm_size_, layers_,
                                               "ssm splat stencil");
     for (const auto& target : soft_maps_)

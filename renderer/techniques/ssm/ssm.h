@@ -208,7 +208,8 @@ private:
     // accumulate=samples: each texel's occlusion from its sample mask (samples_resolve.comp).
     void resolveSamples();
     // Sets the splat's stencil to 1 where a used receiver layer has no receiver (FIRST, after
-    // clearing it) or, accumulate=samples, where every sample is hidden (splat_done.frag).
+    // clearing it and writing the layers' receiver depths into its depth) or, with
+    // accumulate=samples, where every sample is hidden (splat_done.frag).
     void markDoneTexels(bool first);
 
     // Projects the soft shadow map(s) onto the receivers: visibility and the occlusion channel.
@@ -234,8 +235,9 @@ private:
     // The visibility pass's cover (COVER 1: the pixels it settles) and its stencil
     gl::Program visibility_cover_;
     passes::CoverStencil visibility_stencil_{"ssm visibility cover"};
-    gl::Program done_program_;
-    gl::Texture splat_stencil_;  // DEPTH24_STENCIL8 array: 1 where the splat has nothing to add
+    gl::Program done_program_, fill_depth_program_;  // splat_done.frag, FILL_DEPTH 0 and 1
+    // DEPTH24_STENCIL8 array: stencil 1 where the splat has nothing to add; depth the receiver's
+    gl::Texture splat_stencil_;
     gl::Texture receiver_max_;
     gl::Texture receiver_planes_;  // RGBA16F array: the receiver layers' normals
     int receiver_levels_ = 1;
