@@ -29,13 +29,14 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     out.push_back({"technique.map_size", "the occluder maps, their ids and micro-patch lists",
                    saturatingProduct({m, m, (4 + 4 + sizeof(MicroPatch)) * sides + lod})});
     // Per receiver layer: soft shadow maps (per side) or the sample masks, depth and id, the
-    // farthest-receiver pyramid (4/3 of a float); plus the k-buffer's slots and the peeling's
-    // scratch depth and ids (its fallback).
+    // farthest-receiver pyramid (4/3 of a float), the tangent planes (RGBA16F) and the splat's
+    // depth and stencil (4); plus the k-buffer's slots and the peeling's scratch depth and ids
+    // (its fallback).
     const auto slots = static_cast<u64>(ReceiverLayers::kbufferSlots(static_cast<int>(layers)));
     out.push_back({"technique.layers",
                    "the soft shadow maps and receiver layers (" + squareText(ssm) + " x " +
                        std::to_string(layers) + ")",
-                   saturatingProduct({s, s, (soft + 4 + 4 + 6) * layers + 4 * slots + 8})});
+                   saturatingProduct({s, s, (soft + 4 + 4 + 6 + 8 + 4) * layers + 4 * slots + 8})});
     return out;
 }
 
