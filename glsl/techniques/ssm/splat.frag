@@ -164,6 +164,10 @@ void addOwnObject(ivec2 t, vec4 r, float z, vec3 p) {
         if (above(n, r, z, p, margin)) add(r, z, p);
         return;
     }
+    // No row has a micro-patch above the plane where the block's highest corner is not (each
+    // micro-patch's lowest corner lies no higher): the rows' loop would add nothing.
+    vec2 hi = max(n.xy * r.xy, n.xy * r.zw);
+    if (hi.x + hi.y + n.z * z - dot(n, p) <= margin - 1e-5 * p.z) return;
     int k = v_children;
     vec2 w = (r.zw - r.xy) / float(k);  // one micro-patch
     float rise = n.x * w.x;             // of the lowest corner from a column to the next
