@@ -24,8 +24,7 @@ void main() {
     float dr = texelFetch(u_receiver, ivec3(t, u_layer), 0).r;
 #if FILL_DEPTH
     gl_FragDepth = dr;
-    return;
-#endif
+#else
     if (dr >= 1.0) return;
 #if SAMPLES
     uint all = ~0u;
@@ -34,4 +33,5 @@ void main() {
     if (all == ~0u) return;
 #endif
     discard;
+#endif
 }

@@ -124,8 +124,7 @@ float shareAboveHorizon(vec3 p, vec3 n) {
 // The pixel's visibility V before its horizon, the receiver layer it took (-1: none) and whether
 // the light's share above its horizon multiplies V; false where the pixel is settled elsewhere
 // (COVER 1: by the full program, which the discard leaves it to).
-bool receiverVisibility(ivec2 pix, vec3 pos, vec3 n, int id, out float v, out int layer,
-                        out bool horizon) {
+bool receiverVisibility(vec3 pos, vec3 n, int id, out float v, out int layer, out bool horizon) {
     v = 1.0;
     layer = -1;
     horizon = false;
@@ -223,8 +222,7 @@ void main() {
     if (pos.w != 0.0) {
         bool horizon;
         vec3 n = geometricNormal(pix);
-        if (!receiverVisibility(pix, pos.xyz, n, texelFetch(u_id, pix, 0).r, v, layer, horizon))
-            discard;
+        if (!receiverVisibility(pos.xyz, n, texelFetch(u_id, pix, 0).r, v, layer, horizon)) discard;
         // One call site: a software rasteriser runs every inlined copy for every fragment.
         if (horizon) v *= shareAboveHorizon(pos.xyz, n);
     }
