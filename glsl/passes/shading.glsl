@@ -24,7 +24,15 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { GpuLight u_lig
 // contribution cos cos / r^2) and a > 0, written by techniques that sample the light (a = 0
 // from the others).
 layout(binding = UNIT_SHADE_VISIBILITY) uniform sampler2DArray u_visibility;
+// The lights' count: compiled in (LIGHT_COUNT, shade.cpp: a program per count up to a few) or a
+// uniform. A constant trip count lets the compiler unroll the loop and index the lights at
+// constant offsets: the shade pass at 1024 x 768 with one light 40 -> 29 ms on llvmpipe.
+#ifdef LIGHT_COUNT
+#define SHADE_LIGHT_COUNT LIGHT_COUNT
+#else
 uniform int u_light_count;
+#define SHADE_LIGHT_COUNT u_light_count
+#endif
 // The layer holding the environment's irradiance per pixel (rgb: shadowed, a: unshadowed
 // luminance; written by `exact`, or folded from the environment's lights, environment_fold.frag),
 // or -1.
@@ -66,7 +74,7 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float 
     vec3 g = vis_pix.x < 0 ? n : geometricNormal(vis_pix);
     vec3 radiance = vec3(0.0);
     float num = 0.0, den = 0.0, plain = 0.0;
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < SHADE_LIGHT_COUNT; ++i) {
         vec4 layer = vis_pix.x < 0 ? vec4(1.0, 1.0, 1.0, 1.0)
                                    : texelFetch(u_visibility, ivec3(vis_pix, i), 0);
         vec4 term = lightIrradiance(u_lights[i], layer, pos, n, g, casts);
@@ -76,7 +84,7 @@ vec3 shadePoint(vec3 pos, vec3 n, vec3 albedo, int id, ivec2 vis_pix, out float 
         den += term.a;
         plain += v;
     }
-    int terms = u_light_count;
+    int terms = SHADE_LIGHT_COUNT;
     // A sample no representative pixel stands for (VIS_PIX.x < 0) has no environment term: the
     // layer is per pixel, and such slivers are rare.
     if (u_env_layer >= 0 && vis_pix.x >= 0) {

@@ -26,8 +26,7 @@ Shade::Shade(int width, int height, int samples, const gl::Buffer& caster_flags)
       caster_flags_(caster_flags),
       beauty_(gl::createTexture2D(GL_RGBA32F, width, height, "beauty")),
       visibility_(gl::createTexture2D(GL_R32F, width, height, "visibility")),
-      fbo_(gl::createFramebuffer("shade")),
-      program_(gl::buildProgram("shade", {"passes/fullscreen.vert", "passes/shade.frag"})) {
+      fbo_(gl::createFramebuffer("shade")) {
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, beauty_.id(), 0);
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, visibility_.id(), 0);
     const GLenum bufs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
@@ -37,12 +36,22 @@ Shade::Shade(int width, int height, int samples, const gl::Buffer& caster_flags)
         glNamedFramebufferTexture(fbo_.id(), GL_STENCIL_ATTACHMENT, stencil_.id(), 0);
         classify_ = gl::buildProgram("msaa classify",
                                      {"passes/fullscreen.vert", "passes/msaa_classify.frag"});
-        samples_program_ = gl::buildProgram(
-            "shade samples", {"passes/fullscreen.vert", "passes/shade_samples.frag"});
         pixels_ = gl::createQuery(GL_SAMPLES_PASSED, "shade msaa pixels");
     }
     if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError("shade: framebuffer incomplete");
+}
+
+const gl::Program& Shade::programFor(std::map<int, gl::Program>& cache, int count,
+                                     const char* label, const char* fragment) {
+    const int key = count <= kCompiledLights ? count : -1;
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+    gl::Defines defines;
+    if (key >= 0) defines.emplace_back("LIGHT_COUNT", std::to_string(key));
+    return cache
+        .emplace(key, gl::buildProgram(label, {"passes/fullscreen.vert", fragment}, defines))
+        .first->second;
 }
 
 void uploadGpuLights(gl::DynamicBuffer& buffer, const std::vector<scene::RectLight>& lights) {
@@ -66,7 +75,9 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glUseProgram(program_.id());
+    const int count = static_cast<int>(lights.size());
+    const gl::Program& program = programFor(programs_, count, "shade", "passes/shade.frag");
+    glUseProgram(program.id());
     glBindTextureUnit(UNIT_SHADE_POSITION, gbuffer.position().id());
     glBindTextureUnit(UNIT_SHADE_NORMAL, gbuffer.normal().id());
     glBindTextureUnit(UNIT_SHADE_ALBEDO, gbuffer.albedo().id());
@@ -74,8 +85,8 @@ void Shade::render(const GBuffer& gbuffer, const gl::Texture& visibility_layers,
     glBindTextureUnit(UNIT_SHADE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags_.id());
-    gl::setUniform(program_, "u_light_count", static_cast<int>(lights.size()));
-    gl::setUniform(program_, "u_env_layer", env_layer);
+    gl::setUniform(program, "u_light_count", count);
+    gl::setUniform(program, "u_env_layer", env_layer);
     fullscreen_.draw();
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -119,7 +130,8 @@ void Shade::renderSamples(const GBuffer& gbuffer, const SampleGBuffer& samples,
     // runs before the shader, so the other pixels cost nothing.
     glStencilFunc(GL_EQUAL, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const auto& p = samples_program_;
+    const auto& p = programFor(samples_programs_, static_cast<int>(lights.size()), "shade samples",
+                               "passes/shade_samples.frag");
     glUseProgram(p.id());
     gl::setUniform(p, "u_light_count", static_cast<int>(lights.size()));
     gl::setUniform(p, "u_env_layer", env_layer);

@@ -5,6 +5,7 @@
 // matches best (Schwarz & Stamminger 2008, section 7), and averages them.
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include "renderer/gl/dynamic_buffer.h"
@@ -50,13 +51,21 @@ public:
     const gl::Texture& visibility() const { return visibility_; }  // R32F
 
 private:
+    // The program LABEL (FRAGMENT) for COUNT lights from CACHE, built on first use: the count
+    // compiled in up to kCompiledLights (glsl/passes/shading.glsl, LIGHT_COUNT), else with the
+    // count as a uniform (kept under the key -1).
+    static constexpr int kCompiledLights = 8;
+    const gl::Program& programFor(std::map<int, gl::Program>& cache, int count, const char* label,
+                                  const char* fragment);
+
     int width_, height_, samples_;
     const gl::Buffer& caster_flags_;
     SampleGuide guide_ = SampleGuide::Depth;
     gl::Texture beauty_, visibility_, stencil_;
     gl::Framebuffer fbo_;
-    gl::Program program_, classify_, samples_program_;  // the last two for SAMPLES > 1
-    gl::Query pixels_;                                  // samples passed, SAMPLES > 1
+    std::map<int, gl::Program> programs_, samples_programs_;  // by light count (programFor)
+    gl::Program classify_;                                    // for SAMPLES > 1
+    gl::Query pixels_;                                        // samples passed, SAMPLES > 1
     gl::DynamicBuffer lights_{"lights"};
     Fullscreen fullscreen_;
 };
