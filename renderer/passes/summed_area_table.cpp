@@ -22,6 +22,11 @@ void SummedAreaTable::build(const gl::Texture& source) {
     glBindImageTexture(IMAGE_SAT_TABLE, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(groups, static_cast<GLuint>(layers_), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    sumColumns();
+}
+
+void SummedAreaTable::sumColumns() {
+    const GLuint groups = static_cast<GLuint>((size_ + 1 + 63) / 64);
     glUseProgram(columns_.id());
     glBindImageTexture(IMAGE_SAT_COLUMNS_TABLE, table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
                        GL_RGBA32F);

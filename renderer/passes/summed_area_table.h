@@ -14,6 +14,10 @@ public:
     SummedAreaTable(int size, int layers, const char* label);
     // Fills the table from SOURCE (RGBA32F array of the same size and layers, level 0).
     void build(const gl::Texture& source);
+    // The second half of build(), for a caller that wrote the running sums of each source row
+    // into row y + 1 of table() itself (and zeros into row 0 and column 0): sums down the
+    // columns.
+    void sumColumns();
     const gl::Texture& table() const { return table_; }
 
 private:

@@ -21,8 +21,10 @@ expect_exit 2 "small.json: technique.map_size: the shadow map array \(16384\^2 x
     render -t reference -D technique.map_size=16384
 expect_exit 2 "small.json: technique.map_size: the shadow map array \(16384\^2 x 4\)" -- \
     render -t adaptive -D technique.map_size=16384
-expect_exit 2 "small.json: technique.order: the basis images \(4096\^2 x 17 RGBA32F\)" -- \
+expect_exit 2 "small.json: technique.order: the summed-area table array \(4097\^2 x 17 RGBA32F\)" -- \
     render -t css -D technique.order=16 -D technique.map_size=4096
+expect_exit 2 "small.json: technique.order: the basis images \(4096\^2 x 17 RGBA32F, mipmapped\)" -- \
+    render -t css -D technique.order=16 -D technique.map_size=4096 -D technique.filter=mipmap
 # ssm_splat_bound: map 4096 x ssm 4096 ran past 300 s.
 expect_exit 2 "small.json: technique.ssm_size: map_size x ssm_size = 4096 x 4096 exceeds" -- \
     render -t ssm -D technique.map_size=4096 -D technique.ssm_size=4096

@@ -29,23 +29,31 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at
       layers_(basisLayers(order)),
       depth_(map_size, "css shadow map"),
       depth_pass_("css depth", passes::LightDepthPass::Output::Depth),
-      basis_program_(gl::buildProgram(
-          "css basis", {"techniques/css/basis.comp"},
-          {{"ORDER", std::to_string(order)}, {"MIDDLE", middle_at > 0.0f ? "1" : "0"}})),
       middle_at_(middle_at) {
+    const gl::Defines defines = {{"ORDER", std::to_string(order)},
+                                 {"MIDDLE", middle_at > 0.0f ? "1" : "0"}};
+    if (mipmap)
+        basis_program_ = gl::buildProgram("css basis", {"techniques/css/basis.comp"}, defines);
+    if (sat) {
+        gl::Defines rows = defines;
+        rows.emplace_back("SAT_ROWS", "1");
+        sat_rows_program_ =
+            gl::buildProgram("css basis row sums", {"techniques/css/basis.comp"}, rows);
+    }
     if (middle_at > 0.0f)
         far_ = std::make_unique<passes::LightDepthTarget>(map_size, "css far map");
-    const int levels = mipmap ? std::bit_width(static_cast<unsigned>(map_size)) : 1;
-    basis_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "css basis images");
-    glTextureStorage3D(basis_.id(), levels, GL_RGBA32F, map_size, map_size, layers_);
-    glTextureParameteri(basis_.id(), GL_TEXTURE_MIN_FILTER,
-                        mipmap ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-    glTextureParameteri(basis_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     // Centred values are 0 for empty texels, so outside the map is the zero border colour.
     const float border[4] = {0, 0, 0, 0};
-    glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    glTextureParameterfv(basis_.id(), GL_TEXTURE_BORDER_COLOR, border);
+    if (mipmap) {
+        const int levels = std::bit_width(static_cast<unsigned>(map_size));
+        basis_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "css basis images");
+        glTextureStorage3D(basis_.id(), levels, GL_RGBA32F, map_size, map_size, layers_);
+        glTextureParameteri(basis_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(basis_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glTextureParameteri(basis_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        glTextureParameterfv(basis_.id(), GL_TEXTURE_BORDER_COLOR, border);
+    }
     search_sampler_ = gl::createSampler("css search sampler");
     glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(search_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -64,14 +72,23 @@ void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight&
         far_->render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, true);
 }
 
-void CsmMaps::buildBasis() {
-    glUseProgram(basis_program_.id());
-    if (far_) gl::setUniform(basis_program_, "u_middle_at", middle_at_);
+void CsmMaps::buildBasis(Filter filter) {
+    const bool sat = filter == Filter::Sat;
+    if (sat && !sat_) throw RuntimeError("css: summed-area tables were not prepared");
+    if (!sat && !basis_program_) throw RuntimeError("css: mipmaps were not prepared");
+    const gl::Program& program = sat ? sat_rows_program_ : basis_program_;
+    glUseProgram(program.id());
+    if (far_) gl::setUniform(program, "u_middle_at", middle_at_);
     glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_.depth.id());
     if (far_) glBindTextureUnit(CSS_UNIT_BASIS_FAR, far_->depth.id());
-    glBindImageTexture(CSS_IMAGE_BASIS, basis_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
-    glDispatchCompute(groups, groups, 1);
+    glBindImageTexture(CSS_IMAGE_BASIS, sat ? sat_->table().id() : basis_.id(), 0, GL_TRUE, 0,
+                       GL_WRITE_ONLY, GL_RGBA32F);
+    if (sat) {  // an invocation per row
+        glDispatchCompute(static_cast<GLuint>((map_size_ + 63) / 64), 1, 1);
+    } else {
+        const GLuint groups = static_cast<GLuint>((map_size_ + 7) / 8);
+        glDispatchCompute(groups, groups, 1);
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
     glUseProgram(0);
@@ -79,11 +96,12 @@ void CsmMaps::buildBasis() {
 
 void CsmMaps::prefilter(Filter filter) {
     if (filter == Filter::Mipmap) {
+        if (!basis_) throw RuntimeError("css: mipmaps were not prepared");
         glGenerateTextureMipmap(basis_.id());
         return;
     }
     if (!sat_) throw RuntimeError("css: summed-area tables were not prepared");
-    sat_->build(basis_);
+    sat_->sumColumns();
 }
 
 const gl::Texture& CsmMaps::filtered(Filter filter) const {

@@ -1,6 +1,6 @@
 // The prefiltered maps of `css` for one light: a linear-depth shadow map from the light's
-// centre (and one of the casters' farthest surfaces), its CSM and CSM-Z basis images
-// (glsl/techniques/css/basis.comp) in one RGBA32F array, and their prefiltering.
+// centre (and one of the casters' farthest surfaces), its CSM and CSM-Z basis
+// (glsl/techniques/css/basis.comp), prefiltered by mipmaps or summed-area tables.
 #pragma once
 
 #include <memory>
@@ -46,9 +46,12 @@ public:
     // The caster depth map seen through WINDOW (and with MIDDLE_AT the farthest surfaces').
     void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
                      const passes::LightWindow& window, const DepthRange& range);
-    // The basis images of the depth map (centred on their empty-texel values).
-    void buildBasis();
-    // Prefilters the basis with FILTER; filtered(FILTER) is then ready for lookups.
+    // The basis of the depth map (centred on their empty-texel values) for FILTER: with
+    // mipmaps the basis images; with summed-area tables the running sums of their rows,
+    // straight into the table (the images are not stored).
+    void buildBasis(Filter filter);
+    // Prefilters the basis with FILTER (after buildBasis(FILTER)): the mipmaps, or the table's
+    // column sums; filtered(FILTER) is then ready for lookups.
     void prefilter(Filter filter);
     const gl::Texture& filtered(Filter filter) const;
     // For the mipmap's blocker searches: bilinear within the nearest level (half the texels
@@ -62,11 +65,11 @@ private:
     passes::LightDepthTarget depth_;
     std::unique_ptr<passes::LightDepthTarget> far_;  // the farthest surfaces, with middle_at
 
-    gl::Texture basis_;  // mipmapped; level 0 also feeds the SAT
+    gl::Texture basis_;  // mipmapped (written only for the mipmaps)
     gl::Sampler search_sampler_;
     std::unique_ptr<passes::SummedAreaTable> sat_;
     passes::LightDepthPass depth_pass_;
-    gl::Program basis_program_;
+    gl::Program basis_program_, sat_rows_program_;  // basis.comp, SAT_ROWS 0 and 1
     float middle_at_;
 };
 

@@ -47,7 +47,7 @@ public:
             css::depthRange(window, settings_.order, settings_.ring_shift);
         if (!window.empty()) {
             ctx.pass("css_shadow_map", [&] { maps_->renderDepth(ctx.gpu, light, window, range); });
-            ctx.pass("css_basis", [&] { maps_->buildBasis(); });
+            ctx.pass("css_basis", [&] { maps_->buildBasis(filter); });
             ctx.pass(filter == CsmMaps::Filter::Sat ? "css_sat" : "css_mipmap",
                      [&] { maps_->prefilter(filter); });
         }

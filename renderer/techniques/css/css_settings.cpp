@@ -50,12 +50,16 @@ MemoryTerms memoryTerms(const Params& p, std::uint64_t) {
     const FilterChoice filter = p.getEnum(kFilter);
     const std::uint64_t basis = saturatingProduct({m, m, 16, layers});
     MemoryTerms out;
-    out.push_back(
-        {"technique.order",
-         "the basis images (" + squareText(map) + " x " + std::to_string(layers) + " RGBA32F)",
-         filter != FilterChoice::Sat ? basis + basis / 3 : basis, true});
+    // With summed-area tables alone the basis goes straight into the tables' rows.
+    if (filter != FilterChoice::Sat)
+        out.push_back({"technique.order",
+                       "the basis images (" + squareText(map) + " x " + std::to_string(layers) +
+                           " RGBA32F, mipmapped)",
+                       basis + basis / 3, true});
     if (filter != FilterChoice::Mipmap)
-        out.push_back({"technique.order", "the summed-area tables",
+        out.push_back({"technique.order",
+                       "the summed-area table array (" + squareText(map + 1) + " x " +
+                           std::to_string(layers) + " RGBA32F)",
                        saturatingProduct({m + 1, m + 1, 16, layers}), true});
     const bool middle = p.getEnum(kBlockerDepth) == BlockerDepth::Middle;
     out.push_back({"technique.map_size",
