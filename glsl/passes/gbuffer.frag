@@ -7,10 +7,17 @@ in vec3 v_normal;
 in vec2 v_uv;
 in float v_view_depth;
 
+// TEXTURED 1: the variant for materials with a base colour texture (GpuScene::draw picks it
+// per draw; a branch on a uniform ran the lookup for every pixel on llvmpipe, a quarter of this
+// pass at 1024 x 768).
+#ifndef TEXTURED
+#define TEXTURED 0
+#endif
 uniform vec4 u_base_color;
-uniform int u_has_texture;
 uniform int u_object_id;
+#if TEXTURED
 layout(binding = UNIT_BASE_TEXTURE) uniform sampler2D u_base_texture;
+#endif
 
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
@@ -22,7 +29,9 @@ void main() {
     vec3 n = normalize(v_normal);
     if (!gl_FrontFacing) n = -n;  // two-sided surfaces (planes seen from below)
     vec4 albedo = u_base_color;
-    if (u_has_texture != 0) albedo *= texture(u_base_texture, v_uv);  // sRGB decoded by GL
+#if TEXTURED
+    albedo *= texture(u_base_texture, v_uv);  // sRGB decoded by GL
+#endif
     o_position = vec4(v_world, 1.0);
     o_normal = vec4(n, v_view_depth);
     o_albedo = vec4(albedo.rgb, 1.0);

@@ -28,7 +28,7 @@ GBuffer::GBuffer(int width, int height)
       geometric_normal_(gl::createTexture2D(GL_RGBA16F, width, height, "gbuffer geometric normal")),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, "gbuffer depth")),
       fbo_(gl::createFramebuffer("gbuffer")),
-      program_(gl::buildProgram("gbuffer", {"passes/gbuffer.vert", "passes/gbuffer.frag"})) {
+      programs_(buildGBufferPrograms()) {
     GLuint f = fbo_.id();
     glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT0, position_.id(), 0);
     glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT1, normal_.id(), 0);
@@ -43,7 +43,15 @@ GBuffer::GBuffer(int width, int height)
         throw RuntimeError("gbuffer: framebuffer incomplete");
 }
 
-void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
+GBufferPrograms buildGBufferPrograms() {
+    const auto build = [](const char* label, const char* textured) {
+        return gl::buildProgram(label, {"passes/gbuffer.vert", "passes/gbuffer.frag"},
+                                {{"TEXTURED", textured}});
+    };
+    return {build("gbuffer", "0"), build("gbuffer textured", "1")};
+}
+
+void drawGBuffer(GLuint fbo, int width, int height, const GBufferPrograms& programs,
                  const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection) {
     const float zero[4] = {0, 0, 0, 0};
     const GLint none[4] = {-1, -1, -1, -1};
@@ -61,10 +69,12 @@ void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program.id());
-    gl::setUniform(program, "u_view", view);
-    gl::setUniform(program, "u_projection", projection);
-    scene.draw(program, GpuScene::Filter::All);
+    for (const gl::Program* p : {&programs.textured, &programs.plain}) {
+        glUseProgram(p->id());
+        gl::setUniform(*p, "u_view", view);
+        gl::setUniform(*p, "u_projection", projection);
+    }
+    scene.draw(programs.plain, GpuScene::Filter::All, 1, &programs.textured);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -74,7 +84,7 @@ void GBuffer::bindGeometricNormal() const {
 }
 
 void GBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {
-    drawGBuffer(fbo_.id(), width_, height_, program_, scene, camera.view, camera.projection);
+    drawGBuffer(fbo_.id(), width_, height_, programs_, scene, camera.view, camera.projection);
 }
 
 }  // namespace penumbra::passes

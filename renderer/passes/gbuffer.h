@@ -17,10 +17,16 @@ struct CameraMatrices {
 
 CameraMatrices cameraMatrices(const scene::Camera& camera, int width, int height);
 
+// The G-buffer programs (glsl/passes/gbuffer.*): for untextured materials and, sampling the
+// base colour texture, for textured ones.
+struct GBufferPrograms {
+    gl::Program plain, textured;
+};
+GBufferPrograms buildGBufferPrograms();
+
 // Clears FBO (colour 0-4: position, normal, albedo, id, geometric normal; and depth) and draws
-// SCENE into it with PROGRAM (glsl/passes/gbuffer.*) through VIEW and PROJECTION: the G-buffer
-// passes' one draw.
-void drawGBuffer(GLuint fbo, int width, int height, const gl::Program& program,
+// SCENE into it with PROGRAMS through VIEW and PROJECTION: the G-buffer passes' one draw.
+void drawGBuffer(GLuint fbo, int width, int height, const GBufferPrograms& programs,
                  const GpuScene& scene, const glm::mat4& view, const glm::mat4& projection);
 
 class GBuffer {
@@ -44,7 +50,7 @@ private:
     int width_, height_;
     gl::Texture position_, normal_, albedo_, id_, geometric_normal_, depth_;
     gl::Framebuffer fbo_;
-    gl::Program program_;
+    GBufferPrograms programs_;
 };
 
 }  // namespace penumbra::passes

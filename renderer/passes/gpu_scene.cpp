@@ -136,23 +136,19 @@ size_t GpuScene::triangleCount() const {
 }
 
 void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
-                    int texture_unit) const {
+                    const gl::Program* textured, int texture_unit) const {
     // Each program gets the per-object uniforms its shaders declare: a depth pass has no
     // normals or colours (strict uniforms would refuse them, see gl::setStrictUniforms).
     const auto& declared = gl::programUniforms(program);
     const bool normals = declared.count("u_normal_matrix") > 0;
     const bool ids = declared.count("u_object_id") > 0;
     const bool colours = declared.count("u_base_color") > 0;
-    const bool textures = declared.count("u_has_texture") > 0;
+    const gl::Program* bound = &program;
+    const GpuObject* set_for[2] = {nullptr, nullptr};  // whose uniforms each program holds
     for (const auto& o : objects_) {
         if (filter == Filter::Casters && !scene::castsShadow(o.shadow)) continue;
         if (filter == Filter::Receivers && !scene::receivesShadow(o.shadow)) continue;
         if (filter == Filter::ReceiversOnly && o.shadow != scene::ShadowRole::Receiver) continue;
-        gl::setUniform(program, "u_model", o.transform);
-        if (normals)
-            gl::setUniform(program, "u_normal_matrix",
-                           glm::mat3(glm::inverseTranspose(o.transform)));
-        if (ids) gl::setUniform(program, "u_object_id", o.id);
         // A mirrored transform turns the model's counter-clockwise front faces clockwise: without
         // this, gl_FrontFacing called every face seen a back face and the G-buffer turned its
         // normals inward (a duck scaled by -1 along x rendered black).
@@ -162,13 +158,24 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
             size_t m = static_cast<size_t>(d.material) < o.model->base_colors.size()
                            ? static_cast<size_t>(d.material)
                            : 0;
-            if (colours) gl::setUniform(program, "u_base_color", o.model->base_colors[m]);
             int tex = o.model->material_texture[m];
-            if (!d.has_uvs) tex = -1;
-            if (textures) gl::setUniform(program, "u_has_texture", tex >= 0 ? 1 : 0);
-            // Only for a program that samples it: bound for any other, it replaced whatever
-            // that program's own texture at TEXTURE_UNIT was on textured objects.
-            if (textures && tex >= 0 && static_cast<size_t>(tex) < o.model->textures.size())
+            if (!d.has_uvs || static_cast<size_t>(tex) >= o.model->textures.size()) tex = -1;
+            const bool use_textured = textured && tex >= 0;
+            const gl::Program& p = use_textured ? *textured : program;
+            if (bound != &p) {
+                glUseProgram(p.id());
+                bound = &p;
+            }
+            if (set_for[use_textured] != &o) {
+                gl::setUniform(p, "u_model", o.transform);
+                if (normals)
+                    gl::setUniform(p, "u_normal_matrix",
+                                   glm::mat3(glm::inverseTranspose(o.transform)));
+                if (ids) gl::setUniform(p, "u_object_id", o.id);
+                set_for[use_textured] = &o;
+            }
+            if (colours) gl::setUniform(p, "u_base_color", o.model->base_colors[m]);
+            if (use_textured)
                 glBindTextureUnit(static_cast<GLuint>(texture_unit),
                                   o.model->textures[static_cast<size_t>(tex)].id());
             glDrawElementsInstancedBaseVertex(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
@@ -176,6 +183,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
                                               d.base_vertex);
         }
     }
+    if (bound != &program) glUseProgram(program.id());
     glFrontFace(GL_CCW);
     glBindVertexArray(0);
 }

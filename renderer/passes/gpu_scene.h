@@ -100,11 +100,13 @@ public:
     // Receivers: role receiver or both; ReceiversOnly: role receiver.
     enum class Filter { All, Casters, Receivers, ReceiversOnly };
     // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniform "u_model"
-    // and those of "u_normal_matrix", "u_object_id", "u_base_color", "u_has_texture" that
-    // PROGRAM's shaders declare, and binds the base colour texture to unit TEXTURE_UNIT.
+    // and those of "u_normal_matrix", "u_object_id", "u_base_color" that PROGRAM's shaders
+    // declare. With TEXTURED (PROGRAM's variant that samples the base colour texture, its other
+    // uniforms set by the caller as PROGRAM's), a draw whose material has a texture (and uvs)
+    // uses it, the texture bound to unit TEXTURE_UNIT, and PROGRAM is bound again after it.
     // INSTANCES > 1 draws instanced.
     void draw(const gl::Program& program, Filter filter, int instances = 1,
-              int texture_unit = UNIT_BASE_TEXTURE) const;
+              const gl::Program* textured = nullptr, int texture_unit = UNIT_BASE_TEXTURE) const;
 
 private:
     std::unordered_map<const scene::Model*, std::unique_ptr<GpuModel>> models_;

@@ -56,7 +56,7 @@ SampleGBuffer::SampleGBuffer(int width, int height, int samples)
       id_(gl::createTexture2DArray(GL_R32I, width, height, samples, "sample gbuffer id")),
       depth_(gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, width, height, samples,
                                       "sample gbuffer depth")),
-      program_(gl::buildProgram("gbuffer", {"passes/gbuffer.vert", "passes/gbuffer.frag"})) {
+      programs_(buildGBufferPrograms()) {
     sampleOffsets(samples);  // a count without a pattern fails here, not mid-frame
     for (int s = 0; s < samples; ++s) {
         gl::Framebuffer fbo = gl::createFramebuffer("sample gbuffer " + std::to_string(s));
@@ -78,7 +78,7 @@ SampleGBuffer::SampleGBuffer(int width, int height, int samples)
 void SampleGBuffer::render(const GpuScene& scene, const CameraMatrices& camera) {
     const auto offsets = sampleOffsets(samples_);
     for (int s = 0; s < samples_; ++s)
-        drawGBuffer(fbos_[static_cast<size_t>(s)].id(), width_, height_, program_, scene,
+        drawGBuffer(fbos_[static_cast<size_t>(s)].id(), width_, height_, programs_, scene,
                     camera.view,
                     jitteredProjection(camera.projection, offsets[static_cast<size_t>(s)], width_,
                                        height_));

@@ -38,7 +38,7 @@ private:
     int width_, height_, samples_;
     gl::Texture position_, normal_, albedo_, id_, depth_;
     std::vector<gl::Framebuffer> fbos_;  // one per sample
-    gl::Program program_;
+    GBufferPrograms programs_;
 };
 
 }  // namespace penumbra::passes
