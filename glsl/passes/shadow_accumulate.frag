@@ -26,7 +26,10 @@ layout(binding = UNIT_ACCUMULATE_ID) uniform isampler2D u_id;
 
 uniform int u_view_base;
 uniform int u_count;
-uniform int u_pcf;              // kernel width in texels (1 = a single hard test)
+// The PCF kernel's width in texels (1 = a single hard test), compiled in (shadow_maps.cpp).
+#ifndef PCF
+#define PCF 1
+#endif
 uniform float u_normal_offset;  // in texels at the receiver's distance
 uniform float u_depth_bias;     // in linear depth units
 #include "common/light_frame.glsl"
@@ -48,14 +51,17 @@ float lookup(int layer, vec3 q) {
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
     float d = (z - near) * u_lookups[3 * k + 2].x - u_depth_bias;
     d = min(d, 1.0 - 1e-6);  // beyond the far plane: compare against the farthest caster
-    if (u_pcf <= 1) return texture(u_maps, vec4(uv, float(layer), d));
+#if PCF <= 1
+    return texture(u_maps, vec4(uv, float(layer), d));
+#else
     vec2 texel = 1.0 / vec2(textureSize(u_maps, 0).xy);
     float sum = 0.0;
-    float start = -0.5 * float(u_pcf - 1);
-    for (int y = 0; y < u_pcf; ++y)
-        for (int x = 0; x < u_pcf; ++x)
+    float start = -0.5 * float(PCF - 1);
+    for (int y = 0; y < PCF; ++y)
+        for (int x = 0; x < PCF; ++x)
             sum += texture(u_maps, vec4(uv + (vec2(x, y) + start) * texel, float(layer), d));
-    return sum / float(u_pcf * u_pcf);
+    return sum / float(PCF * PCF);
+#endif
 }
 
 void main() {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "renderer/core/error.h"
 #include "renderer/passes/bindings.h"
@@ -135,26 +136,36 @@ void ShadowMapBatch::render(const GpuScene& scene, int view_base, int count, int
     glDeleteTextures(1, &view);
 }
 
-ShadowAccumulate::ShadowAccumulate()
-    : program_(gl::buildProgram("shadow accumulate",
-                                {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"})) {}
+ShadowAccumulate::ShadowAccumulate() {
+    program(1);  // the default, built up front as before
+}
+
+const gl::Program& ShadowAccumulate::program(int pcf) {
+    auto it = programs_.find(pcf);
+    if (it != programs_.end()) return it->second;
+    return programs_
+        .emplace(pcf, gl::buildProgram("shadow accumulate",
+                                       {"passes/fullscreen.vert", "passes/shadow_accumulate.frag"},
+                                       {{"PCF", std::to_string(pcf)}}))
+        .first->second;
+}
 
 void ShadowAccumulate::render(const GBuffer& gbuffer, const ShadowMapBatch& batch, int view_base,
                               int count, const scene::RectLight& light, const ShadowTestSettings& s,
                               const gl::Buffer& caster_flags) {
-    glUseProgram(program_.id());
+    const gl::Program& shader = program(s.pcf);
+    glUseProgram(shader.id());
     glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
     glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
     glBindTextureUnit(UNIT_ACCUMULATE_MAPS, batch.depth().id());
     glBindTextureUnit(UNIT_ACCUMULATE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingCasterFlags, caster_flags.id());
-    gl::setUniform(program_, "u_view_base", view_base);
-    gl::setUniform(program_, "u_count", std::min(count, batch.layers()));
-    gl::setUniform(program_, "u_pcf", s.pcf);
-    gl::setUniform(program_, "u_normal_offset", s.normal_offset);
-    gl::setUniform(program_, "u_depth_bias", s.depth_bias);
-    setLightFrameUniforms(program_, light);
+    gl::setUniform(shader, "u_view_base", view_base);
+    gl::setUniform(shader, "u_count", std::min(count, batch.layers()));
+    gl::setUniform(shader, "u_normal_offset", s.normal_offset);
+    gl::setUniform(shader, "u_depth_bias", s.depth_bias);
+    setLightFrameUniforms(shader, light);
     glDisable(GL_DEPTH_TEST);
     fullscreen_.draw();
     glUseProgram(0);

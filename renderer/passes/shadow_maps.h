@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <map>
 #include <span>
 #include <vector>
 
@@ -79,7 +80,12 @@ public:
                 const gl::Buffer& caster_flags);
 
 private:
-    gl::Program program_;
+    // The program for a PCF kernel of PCF texels, built on first use (glsl/passes/
+    // shadow_accumulate.frag's PCF; a kernel width in a uniform ran the kernel's loop for every
+    // pixel on llvmpipe even at 1: the test 1.1-1.2x slower).
+    const gl::Program& program(int pcf);
+
+    std::map<int, gl::Program> programs_;
     Fullscreen fullscreen_;
 };
 
