@@ -9,7 +9,6 @@ SummedAreaTable::SummedAreaTable(int size, int layers, const char* label)
     : size_(size),
       layers_(layers),
       table_(gl::createTexture2DArray(GL_RGBA32F, size + 1, size + 1, layers, label)),
-      rows_(gl::buildProgram("sat rows", {"passes/sat_rows.comp"})),
       columns_(gl::buildProgram("sat columns", {"passes/sat_columns.comp"})) {
     glTextureParameteri(table_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(table_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -17,6 +16,8 @@ SummedAreaTable::SummedAreaTable(int size, int layers, const char* label)
 
 void SummedAreaTable::build(const gl::Texture& source) {
     const GLuint groups = static_cast<GLuint>((size_ + 1 + 63) / 64);
+    // Built on first use: a caller that writes the rows itself (css) never needs it.
+    if (!rows_) rows_ = gl::buildProgram("sat rows", {"passes/sat_rows.comp"});
     glUseProgram(rows_.id());
     glBindImageTexture(IMAGE_SAT_SOURCE, source.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(IMAGE_SAT_TABLE, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
