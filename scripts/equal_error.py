@@ -19,6 +19,22 @@ def reference_front(points):
     return front
 
 
+def bracket(front, error):
+    """(i0, i1, f, kind): the indices in FRONT of the two points around ERROR and its share f
+    between them (the error's, linear), as reference_time() reads them: kind 'cheapest' (i0 =
+    i1 = 0, f = 0), 'interpolated' or 'beyond' (i0 = i1 = the last, f = 0)."""
+    if not front:
+        raise ValueError("no reference run with an error and a time")
+    if error >= front[0][1]:
+        return 0, 0, 0.0, "cheapest"
+    for i in range(len(front) - 1):
+        e0, e1 = front[i][1], front[i + 1][1]
+        if error >= e1:
+            return i, i + 1, (e0 - error) / (e0 - e1), "interpolated"
+    last = len(front) - 1
+    return last, last, 0.0, "beyond"
+
+
 def reference_time(front, error):
     """(ms, n, kind): the time reference needs for a shadow MAE of at most ERROR.
 
@@ -27,16 +43,9 @@ def reference_time(front, error):
     e0 > ERROR >= e1, time and N are linear in the error: t0 + (e0 - ERROR) / (e0 - e1) (t1 - t0).
     kind 'beyond': ERROR is below every reference's error; the answer is the lowest-error
     reference's time, which is less than reference would need."""
-    if not front:
-        raise ValueError("no reference run with an error and a time")
-    if error >= front[0][1]:
-        return front[0][2], front[0][0], "cheapest"
-    for (n0, e0, t0), (n1, e1, t1) in zip(front, front[1:]):
-        if error >= e1:
-            f = (e0 - error) / (e0 - e1)
-            return t0 + f * (t1 - t0), n0 + f * (n1 - n0), "interpolated"
-    n, _, t = front[-1]
-    return t, n, "beyond"
+    i0, i1, f, kind = bracket(front, error)
+    (n0, _, t0), (n1, _, t1) = front[i0], front[i1]
+    return t0 + f * (t1 - t0), n0 + f * (n1 - n0), kind
 
 
 def equal_error_ratio(ms, error, front):
