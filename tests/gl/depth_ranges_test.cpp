@@ -128,20 +128,7 @@ void main() {
     if (i < uint(queries.length())) results[i] = mssmRange(u_mssm, queries[i]);
 }
 )";
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    const char* text = source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    EXPECT_TRUE(ok) << "mssm query shader did not compile";
-    gl::Program program(glCreateProgram(), "mssm query test");
-    glAttachShader(program.id(), shader);
-    glLinkProgram(program.id());
-    glDeleteShader(shader);
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    EXPECT_TRUE(ok) << "mssm query shader did not link";
-    return program;
+    return penumbra::testing::linkTestProgram("mssm query test", {{GL_COMPUTE_SHADER, source}});
 }
 
 // A SIZE^2 map of distances in [1, 9] but for one texel nearer (0.5) and one farther (10), at

@@ -148,4 +148,24 @@ const std::vector<float>& channel(const output::Image& image, const std::string&
     return c->pixels;
 }
 
+gl::Program linkTestProgram(const std::string& label,
+                            std::initializer_list<std::pair<GLenum, std::string>> stages) {
+    gl::Program program(glCreateProgram(), label);
+    GLint ok = 0;
+    for (const auto& [stage, source] : stages) {
+        const GLuint shader = glCreateShader(stage);
+        const char* text = source.c_str();
+        glShaderSource(shader, 1, &text, nullptr);
+        glCompileShader(shader);
+        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        EXPECT_TRUE(ok) << label << ": a stage did not compile";
+        glAttachShader(program.id(), shader);
+        glDeleteShader(shader);  // freed with the program
+    }
+    glLinkProgram(program.id());
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    EXPECT_TRUE(ok) << label << ": did not link";
+    return program;
+}
+
 }  // namespace penumbra::testing

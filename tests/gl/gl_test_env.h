@@ -5,14 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "renderer/frame/render_frame.h"
 #include "renderer/gl/context.h"
+#include "renderer/gl/handles.h"
 #include "renderer/output/image.h"
 #include "renderer/scene/scene_source.h"
 
@@ -66,5 +69,11 @@ double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b
 
 // Values of channel NAME, which must exist.
 const std::vector<float>& channel(const output::Image& image, const std::string& name);
+
+// A program LABEL linked from STAGES (each a shader stage and its whole source), for tests of
+// shader code that no pass compiles alone; a stage that does not compile or a program that
+// does not link fails the test.
+gl::Program linkTestProgram(const std::string& label,
+                            std::initializer_list<std::pair<GLenum, std::string>> stages);
 
 }  // namespace penumbra::testing

@@ -4,9 +4,9 @@
 // plane, umbra 0, penumbra by back-projection at the level, or at floor and ceiling blended by
 // the fraction (BLEND 1). Diagnostics: level, budget, micro-occluders back-projected, class;
 // Table 2 statistics summed in the Stats buffer. Two programs (pixel_passes.cpp): COVER 1
-// writes the lit and umbra pixels and discards the penumbra, whose stencil stays 1; COVER 0
-// back-projects where the stencil is 1 alone, as the early test skips the rest (a software
-// rasteriser runs a shader's every branch for every fragment it shades).
+// writes the lit and umbra pixels (settling them: passes::drawCovered's depth) and discards the
+// penumbra; COVER 0 back-projects on the penumbra alone, as the early depth test skips the rest
+// (a software rasteriser runs a shader's every branch for every fragment it shades).
 #include "techniques/bitmask/bindings.glsl"
 #include "techniques/bitmask/search.glsl"
 #include "techniques/bitmask/backproject.glsl"

@@ -1,9 +1,9 @@
 #version 450 core
 // `css` visibility of every camera pixel (visibility.glsl). Outputs: colour 0 = visibility,
 // colour 1 = z_avg (normalised depth; 0 where no blocker), colour 2 = the final kernel's width in
-// shadow-map texels along its wider axis. The stencil test (css.cpp: visibility_cover.frag's
-// marks, and with `interpolate` visibility_fine.frag's) runs before the shader, so the pixels
-// they wrote cost nothing here.
+// shadow-map texels along its wider axis. The depth test (css.cpp, passes::drawInTurn: the
+// pixels visibility_cover.frag wrote, and with `interpolate` those visibility_settled.frag and
+// visibility_fine.frag settled) runs before the shader, so those pixels cost nothing here.
 #include "techniques/css/visibility.glsl"
 
 layout(early_fragment_tests) in;

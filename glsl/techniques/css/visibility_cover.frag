@@ -2,10 +2,10 @@
 // `css`: the pixels whose shadow needs the full evaluation, marked before it. A pixel with no
 // caster under its first search kernel (or below its light's horizon, or nearer the light than
 // every caster; visibility.glsl) gets here what the full evaluation would give it, and the
-// stencil (css.cpp: cleared to 1, set to 0 where this shader writes) keeps the evaluation to the
-// others, which are discarded here. A branch would not do: llvmpipe shades a SIMD block's every
-// pixel through both sides of a branch that any of them takes, while a block the stencil test
-// wholly rejects is not shaded. COARSE 1: for visibility_coarse.frag, a sample of every other
+// depth test (css.cpp, passes::drawCovered: the pixels this shader writes are settled) keeps
+// the evaluation to the others, which are discarded here. A branch would not do: llvmpipe
+// shades a SIMD block's every pixel through every line of the shader, whatever branch each
+// takes, while a block the early depth test wholly rejects is not shaded. COARSE 1: for visibility_coarse.frag, a sample of every other
 // pixel (its outputs); COARSE 0: for visibility.frag, every pixel (its outputs).
 #include "techniques/css/visibility.glsl"
 

@@ -7,7 +7,8 @@
 // as wide as its kernel: a thin hard shadow between two lit samples is not interpolated) and,
 // on an object that casts, lie on its facet's plane (its test depth follows that plane), times
 // its own horizon. The others are
-// discarded, and the stencil buffer left 1 there sends them to visibility.frag (css.cpp).
+// discarded, which sends them to visibility.frag (css.cpp, passes::drawInTurn). The pixels
+// visibility_settled.frag settled (the cleared values) never reach this shader.
 // Pixels without a surface get the cleared values. Outputs as visibility.frag's.
 #include "techniques/css/visibility.glsl"
 

@@ -21,7 +21,7 @@
 #define COVER 0
 #endif
 #if !COVER
-layout(early_fragment_tests) in;  // the stencil left 1 by the cover pass, tested before
+layout(early_fragment_tests) in;  // the cover pass's depth (passes::drawCovered), tested before
 #endif
 #include "common/caster_flags.glsl"
 #include "common/geometric_normal.glsl"

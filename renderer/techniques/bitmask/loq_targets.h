@@ -1,6 +1,6 @@
 // `bitmask`'s screen-sized intermediate maps (Schwarz & Stamminger, Fig. 3): the search-area
 // map and two LOQ maps (level, class, budget) that the bilateral filter ping-pongs between, and
-// the stencil that sends only the penumbra to the back-projection.
+// the depth buffer that sends only the penumbra to the back-projection (passes::drawCovered).
 #pragma once
 
 #include "renderer/gl/handles.h"
@@ -19,12 +19,12 @@ public:
     int height() const { return height_; }
     const gl::Texture& area() const { return area_; }
     const gl::Texture& loq(int i) const { return loq_[i]; }
-    // DEPTH24_STENCIL8: 1 where the visibility pass back-projects (pixel_passes.cpp)
-    const gl::Texture& stencil() const { return stencil_; }
+    // DEPTH24_STENCIL8: the pixels the visibility pass's cover settled (pixel_passes.cpp)
+    const gl::Texture& cover() const { return cover_; }
 
 private:
     int width_, height_;
-    gl::Texture area_, loq_[2], stencil_;
+    gl::Texture area_, loq_[2], cover_;
     gl::Framebuffer classify_fbo_, loq_fbo_[2];
 };
 

@@ -3,7 +3,7 @@
 // visibility by back-projection, and the statistics of Table 2 (see bitmask.h).
 #include "glsl/techniques/bitmask/bindings.glsl"
 #include "renderer/gl/param_uniforms.h"
-#include "renderer/passes/cover_stencil.h"
+#include "renderer/passes/cover_depth.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/techniques/bitmask/bitmask.h"
 #include "renderer/techniques/bitmask/mask_textures.h"
@@ -77,7 +77,7 @@ void Bitmask::smoothLoq(frame::FrameContext& ctx) {
 void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                          const passes::LightWindow& window) {
     const GLuint output = ctx.bindOutput();
-    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, targets_->stencil().id(), 0);
+    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, targets_->cover().id(), 0);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     auto draw = [&](const gl::Program& p) {
@@ -110,7 +110,7 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
         fullscreen_.draw();
     };
     passes::drawCovered([&] { draw(visibility_cover_); }, [&] { draw(visibility_); });
-    passes::CoverStencil::detach(output);
+    passes::CoverDepth::detach(output);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
 }

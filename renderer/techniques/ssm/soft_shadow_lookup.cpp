@@ -10,9 +10,9 @@
 namespace penumbra::techniques::ssm {
 
 // Projects the soft shadow map(s) onto the receivers: visibility and the occlusion channel. Two
-// programs under a stencil: the cover writes the pixels that no texel around them shadows, and
-// the full program takes the rest (the same image as the full program alone: on llvmpipe its
-// layer matching costs every pixel its whole code otherwise).
+// programs in turn (passes::drawCovered): the cover writes the pixels that no texel around them
+// shadows, and the full program takes the rest (the same image as the full program alone: on
+// llvmpipe its layer matching costs every pixel its whole code otherwise).
 void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                      const LightWindow& soft, bool shadowed) {
     const GLuint output = ctx.bindOutput();
@@ -23,7 +23,7 @@ void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
     glClearBufferfv(GL_COLOR, 2, none);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    visibility_stencil_.attach(output, ctx.gbuffer.width(), ctx.gbuffer.height());
+    visibility_cover_depth_.attach(output, ctx.gbuffer.width(), ctx.gbuffer.height());
     auto draw = [&](const gl::Program& p) {
         glUseProgram(p.id());
         glBindTextureUnit(SSM_UNIT_VISIBILITY_POSITION, ctx.gbuffer.position().id());
@@ -50,7 +50,7 @@ void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
         fullscreen_.draw();
     };
     passes::drawCovered([&] { draw(visibility_cover_); }, [&] { draw(visibility_program_); });
-    passes::CoverStencil::detach(output);
+    passes::CoverDepth::detach(output);
     glUseProgram(0);
 }
 

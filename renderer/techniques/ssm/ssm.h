@@ -11,7 +11,7 @@
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
-#include "renderer/passes/cover_stencil.h"
+#include "renderer/passes/cover_depth.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/light_depth.h"
 #include "renderer/passes/light_windows.h"
@@ -232,9 +232,9 @@ private:
     std::unique_ptr<passes::LightDepthPass> depth_pass_;
     std::array<gl::Program, ssm::kPatchClasses> splat_programs_;  // per patch class
     gl::Program visibility_program_, max_program_, compact_program_, planes_program_;
-    // The visibility pass's cover (COVER 1: the pixels it settles) and its stencil
+    // The visibility pass's cover (COVER 1: the pixels it settles) and its depth buffer
     gl::Program visibility_cover_;
-    passes::CoverStencil visibility_stencil_{"ssm visibility cover"};
+    passes::CoverDepth visibility_cover_depth_{"ssm visibility cover"};
     gl::Program done_program_, fill_depth_program_;  // splat_done.frag, FILL_DEPTH 0 and 1
     // DEPTH24_STENCIL8 array: stencil 1 where the splat has nothing to add; depth the receiver's
     gl::Texture splat_stencil_;
