@@ -3,11 +3,16 @@
 // sum_k w_k lit_k, and the beauty sums, as passes/shadow_accumulate.frag does from the maps
 // themselves (hard tests), with no map left to read: each view costs a bit and a few flops.
 // Each screen tile weights the views of its own leaves (the cells refined there), and loops
-// over those alone.
+// over those alone. SETTLE 1: only the pixels lit by every view (and those with no surface),
+// drawn first so that SETTLE 0 runs on the others alone (lit_bits.cpp, passes::drawInTurn).
 #include "common/bindings.glsl"
 #include "common/caster_flags.glsl"
 #include "common/geometric_normal.glsl"
 #include "techniques/adaptive/bindings.glsl"
+
+#ifndef SETTLE
+#define SETTLE 0
+#endif
 
 layout(std140, binding = BINDING_SAMPLE_LOOKUPS) uniform SampleLookups {
     vec4 u_lookups[3 * MAX_SAMPLE_LOOKUPS];
@@ -42,22 +47,22 @@ layout(location = 0) out vec4 o_visibility;
 void main() {
     ivec2 pix = ivec2(gl_FragCoord.xy);
     vec4 pos = texelFetch(u_position, pix, 0);
+#if SETTLE
+    if (pos.w == 0.0) {
+        o_visibility = vec4(0.0);  // no surface: blending adds nothing
+        return;
+    }
+#else
     if (pos.w == 0.0) discard;
-    vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
-    vec3 q0 = inLightAxes(pos.xyz);
-    vec3 nl = inLightAxes(n);
+#endif
     bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
-    vec3 g = geometricNormal(pix);
-    vec3 gfl = inLightAxes(g);
     int at = pix.y * u_width + pix.x;
     ivec2 tile = pix / u_tile_side;
     int block = int(u_tile_blocks[tile.y * u_tile_columns + tile.x]);
-    int views = int(u_blocks[block]);
     // A pixel of an object that casts no shadow, lit by every map (most of an image: skip_lit
     // tests only the pixels a caster may shadow, the others' bits stay clear): every view is
     // lit, so the sums below are sum_k w_k and a contribution share of exactly 1: the host's
-    // sum of the tile's weights (the same floats), without the per-view geometry (a block of such
-    // pixels leaves the loop below at once: 113-121 -> 39-44 ms at 1024 x 768 on light_size_2).
+    // sum of the tile's weights (the same floats), without the per-view geometry.
     if (!casts) {
         uint any_shadowed = 0u;
         for (int base = 0; base < u_count; base += 32)
@@ -67,6 +72,14 @@ void main() {
             return;
         }
     }
+#if SETTLE
+    discard;  // for the full evaluation, drawn next
+#else
+    vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
+    vec3 q0 = inLightAxes(pos.xyz);
+    vec3 nl = inLightAxes(n);
+    vec3 gfl = inLightAxes(geometricNormal(pix));
+    int views = int(u_blocks[block]);
     float sum = 0.0, weighted = 0.0, weights = 0.0;
     int word = -1;
     uint shadowed = 0u;
@@ -88,4 +101,5 @@ void main() {
         weights += w * c;
     }
     o_visibility = vec4(sum, weighted, weights, 1.0);  // a: the light was sampled
+#endif
 }

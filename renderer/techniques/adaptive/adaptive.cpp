@@ -247,7 +247,7 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
         }
         views_buffer_.upload(views_);
         ctx.pass("adaptive_eval", [&] {
-            ctx.bindOutput();
+            const GLuint output = ctx.bindOutput();
             if (!litPath()) return addToVisibility(ctx, *maps_, 0, n);
             glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             glEnable(GL_BLEND);
@@ -255,7 +255,7 @@ void Adaptive::evaluate(frame::FrameContext& ctx, const adaptive::LightQuadtree&
             glBlendFunc(GL_ONE, GL_ONE);
             const adaptive::TileWeights tile_weights =
                 adaptive::tileWeights(tree, weighting_, tiled_leaves_, tiles_->count());
-            lit_bits_->evaluate(ctx.gbuffer, n, light, ctx.gpu.casterFlags(), *tiles_,
+            lit_bits_->evaluate(output, ctx.gbuffer, n, light, ctx.gpu.casterFlags(), *tiles_,
                                 tile_weights);
             glDisable(GL_BLEND);
             glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -331,9 +331,10 @@ const TechniqueInfo kAdaptiveTechnique = {
         const int maps = adaptive::mapLayers(p.get(adaptive::kMaxMaps), p.get(kMapSize));
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         MemoryTerms out = {shadowMapArrayTerm(p, maps)};
-        // The lit path's batch and bits (the array's term stays: a bound on both paths).
+        // The lit path's batch and bits (the array's term stays: a bound on both paths), with
+        // the test passes' stencil and the evaluation's depth (4 bytes a pixel each).
         out.push_back({"image.width", "the per-pixel shadow bits of the maps",
-                       saturatingProduct({pixels, std::uint64_t(maps + 31) / 32, 4})});
+                       saturatingProduct({pixels, std::uint64_t(maps + 31) / 32 + 2, 4})});
         if (p.getEnum(adaptive::kEvaluation) == adaptive::Evaluation::Accumulate) {
             out.push_back(shadowMapArrayTerm(p, 1));
             out.back().what = "the scratch map";

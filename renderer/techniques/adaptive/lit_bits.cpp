@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/passes/bindings.h"
+#include "renderer/passes/cover_depth.h"
 #include "renderer/passes/light_depth.h"
 
 namespace penumbra::techniques::adaptive {
@@ -20,6 +21,9 @@ LitBits::LitBits()
       eval_program_(
           gl::buildProgram("adaptive lit evaluation",
                            {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"})),
+      settle_program_(gl::buildProgram(
+          "adaptive lit evaluation of the lit pixels",
+          {"passes/fullscreen.vert", "techniques/adaptive/lit_eval.frag"}, {{"SETTLE", "1"}})),
       region_program_(
           gl::buildProgram("adaptive lit region",
                            {"passes/fullscreen.vert", "techniques/adaptive/lit_region.frag"})),
@@ -222,30 +226,35 @@ ShadowBits LitBits::read(int views, int stride) const {
     return out;
 }
 
-void LitBits::evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                       const gl::Buffer& caster_flags, const ScreenTiles& tiles,
-                       const TileWeights& weights) {
-    glUseProgram(eval_program_.id());
+void LitBits::evaluate(GLuint framebuffer, const passes::GBuffer& gbuffer, int count,
+                       const scene::RectLight& light, const gl::Buffer& caster_flags,
+                       const ScreenTiles& tiles, const TileWeights& weights) {
     glBindTextureUnit(UNIT_ACCUMULATE_POSITION, gbuffer.position().id());
     glBindTextureUnit(UNIT_ACCUMULATE_NORMAL, gbuffer.normal().id());
     glBindTextureUnit(UNIT_ACCUMULATE_ID, gbuffer.id().id());
     gbuffer.bindGeometricNormal();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags, caster_flags.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ADAPTIVE_BINDING_LIT_BITS, bits_.id());
-    gl::setUniform(eval_program_, "u_count", std::min(count, capacity()));
-    gl::setUniform(eval_program_, "u_width", width_);
-    gl::setUniform(eval_program_, "u_pixels", width_ * height_);
     std::vector<std::uint32_t> tile_blocks;
     const std::vector<std::uint32_t> blocks = weights.blocks(tile_blocks);
     tile_sets_.upload(std::span<const std::uint32_t>(tile_blocks), GL_SHADER_STORAGE_BUFFER,
                       ADAPTIVE_BINDING_LIT_TILE_SETS);
     weights_.upload(std::span<const std::uint32_t>(blocks), GL_SHADER_STORAGE_BUFFER,
                     ADAPTIVE_BINDING_LIT_WEIGHTS);
-    gl::setUniform(eval_program_, "u_tile_side", tiles.side());
-    gl::setUniform(eval_program_, "u_tile_columns", tiles.columns());
-    passes::setLightFrameUniforms(eval_program_, light);
-    glDisable(GL_DEPTH_TEST);
-    fullscreen_.draw();
+    const auto draw = [&](const gl::Program& p) {
+        glUseProgram(p.id());
+        gl::setUniform(p, "u_count", std::min(count, capacity()));
+        gl::setUniform(p, "u_width", width_);
+        gl::setUniform(p, "u_pixels", width_ * height_);
+        gl::setUniform(p, "u_tile_side", tiles.side());
+        gl::setUniform(p, "u_tile_columns", tiles.columns());
+        passes::setLightFrameUniforms(p, light);
+        fullscreen_.draw();
+    };
+    // The pixels every view lights first (most of an image), then the others.
+    eval_depth_.attach(framebuffer, width_, height_);
+    passes::drawInTurn({[&] { draw(settle_program_); }, [&] { draw(eval_program_); }});
+    passes::CoverDepth::detach(framebuffer);
     glUseProgram(0);
 }
 

@@ -10,6 +10,7 @@
 #include "renderer/gl/dynamic_buffer.h"
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/cover_depth.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/gbuffer.h"
 #include "renderer/passes/light_windows.h"
@@ -64,12 +65,13 @@ public:
     // Views 0..VIEWS-1 at the centre pixel of every STRIDE x STRIDE block (as shadow_bits.frag
     // samples them), slot = view (blocking).
     ShadowBits read(int views, int stride) const;
-    // Adds sum_k w_k lit_k over views 0..COUNT-1 and the beauty sums into colour 0 of the bound
-    // framebuffer, as passes::ShadowAccumulate with pcf 1 (the caller sets the blending), with
-    // each of TILES' tiles' weights from WEIGHTS (count views a set).
-    void evaluate(const passes::GBuffer& gbuffer, int count, const scene::RectLight& light,
-                  const gl::Buffer& caster_flags, const ScreenTiles& tiles,
-                  const TileWeights& weights);
+    // Adds sum_k w_k lit_k over views 0..COUNT-1 and the beauty sums into colour 0 of
+    // FRAMEBUFFER (bound), as passes::ShadowAccumulate with pcf 1 (the caller sets the blending),
+    // with each of TILES' tiles' weights from WEIGHTS (count views a set); a depth attachment
+    // of its own is on FRAMEBUFFER meanwhile.
+    void evaluate(GLuint framebuffer, const passes::GBuffer& gbuffer, int count,
+                  const scene::RectLight& light, const gl::Buffer& caster_flags,
+                  const ScreenTiles& tiles, const TileWeights& weights);
     // The views whose bits begin() made room for (evaluate() reads at most these).
     int capacity() const { return 32 * planes_; }
 
@@ -77,6 +79,8 @@ private:
     gl::Program test_program_;
     gl::Program tile_test_program_;  // the same over tile_quads.vert's tiles
     gl::Program eval_program_;
+    gl::Program settle_program_;  // lit_eval.frag's SETTLE variant, drawn before eval_program_
+    passes::CoverDepth eval_depth_{"adaptive evaluation cover"};
     passes::Fullscreen fullscreen_;
     gl::Framebuffer fbo_;  // the G-buffer's size, only a stencil: for the test passes
     gl::Buffer bits_;
