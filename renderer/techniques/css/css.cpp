@@ -135,10 +135,9 @@ private:
         passes::checkFramebuffer(coarse_.fbo, "css coarse samples");
     }
 
-    // Draws COVER, which writes the pixels it can settle (visibility_cover.frag: those without
-    // a caster under their first search kernel; visibility_fine.frag: those it interpolates)
-    // and discards the others, then EVALUATE on those alone (passes::drawCovered), into the
-    // bound framebuffer, whose depth attachment the caller set.
+    // Draws COVER (visibility_cover.frag), which writes the pixels with no caster under their
+    // first search kernel and discards the others, then EVALUATE on those alone
+    // (passes::drawCovered), into the bound framebuffer, whose depth attachment the caller set.
     void drawCovered(frame::FrameContext& ctx, const gl::Program& cover,
                      const gl::Program& evaluate, const scene::RectLight& light,
                      const passes::LightWindow& w, const css::DepthRange& range,
