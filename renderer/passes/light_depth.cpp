@@ -38,7 +38,8 @@ LightDepthPass::LightDepthPass(const char* label, Output output)
     : output_(output),
       program_(gl::buildProgram(label, {"passes/light_depth.vert", "passes/light_depth.frag"},
                                 {{"IDS", output == Output::DepthAndIds ? "1" : "0"},
-                                 {"DISTANCE", output == Output::Distance ? "1" : "0"}})) {}
+                                 {"DISTANCE", output == Output::Distance ? "1" : "0"},
+                                 {"RANGE", output == Output::Range ? "1" : "0"}})) {}
 
 LightDepthPass::LightDepthPass(const char* label, const char* fragment)
     : output_(Output::Depth),
@@ -84,6 +85,40 @@ void LightDepthTarget::render(const GpuScene& scene, const LightDepthPass& pass,
     pass.draw(scene, filter, light, view);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+LightDepthRangeTarget::LightDepthRangeTarget(int size_, const char* label)
+    : size(size_),
+      nearest(gl::createTexture2D(GL_R32F, size_, size_, label)),
+      farthest(gl::createTexture2D(GL_R32F, size_, size_, label)),
+      fbo(gl::createFramebuffer(label)) {
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, nearest.id(), 0);
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, farthest.id(), 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+    glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
+    checkFramebuffer(fbo, label);
+}
+
+void LightDepthRangeTarget::render(const GpuScene& scene, const LightDepthPass& pass,
+                                   GpuScene::Filter filter, const scene::RectLight& light,
+                                   const LightDepthView& view) const {
+    beginDepthMapDraw(fbo.id(), size);
+    glDisable(GL_DEPTH_TEST);
+    const float none_near[4] = {1, 0, 0, 0}, none_far[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, none_near);
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, none_far);
+    glEnablei(GL_BLEND, 0);
+    glEnablei(GL_BLEND, 1);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendFunci(1, GL_ONE, GL_ONE);
+    glBlendEquationi(0, GL_MIN);
+    glBlendEquationi(1, GL_MAX);
+    pass.draw(scene, filter, light, view);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

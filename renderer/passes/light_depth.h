@@ -41,6 +41,7 @@ public:
         Depth,        // linear depth in the depth buffer
         DepthAndIds,  // and each surface's object id in colour 0 (R32I)
         Distance,     // the distance itself as (min, max) in colour 0 (RG32F), no depth range
+        Range,        // linear depth in colours 0 and 1, for LightDepthRangeTarget
     };
     LightDepthPass(const char* label, Output output);
     // Depth with the world position and normal passed on to FRAGMENT, a technique's own
@@ -71,6 +72,21 @@ struct LightDepthTarget {
     // or the farthest when FARTHEST.
     void render(const GpuScene& scene, const LightDepthPass& pass, GpuScene::Filter filter,
                 const scene::RectLight& light, const LightDepthView& view, bool farthest) const;
+};
+
+// The nearest and the farthest linear depth of every texel of a SIZE^2 map (R32F each; 1 and
+// 0 where no surface), drawn in one draw through a LightDepthPass with Output::Range: MIN and
+// MAX blending instead of two depth-tested draws, so the objects' vertices are processed once
+// (on llvmpipe, which does that on one thread, the engine's second draw cost twice its first).
+struct LightDepthRangeTarget {
+    int size;
+    gl::Texture nearest, farthest;
+    gl::Framebuffer fbo;
+    LightDepthRangeTarget(int size, const char* label);
+
+    // Clears and draws the objects FILTER selects with PASS through VIEW.
+    void render(const GpuScene& scene, const LightDepthPass& pass, GpuScene::Filter filter,
+                const scene::RectLight& light, const LightDepthView& view) const;
 };
 
 }  // namespace penumbra::passes

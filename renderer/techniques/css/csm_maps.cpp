@@ -27,8 +27,8 @@ DepthRange depthRange(const passes::LightWindow& w, int order, float shift) {
 CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at)
     : map_size_(map_size),
       layers_(basisLayers(order)),
-      depth_(map_size, "css shadow map"),
-      depth_pass_("css depth", passes::LightDepthPass::Output::Depth),
+      depth_pass_("css depth", middle_at > 0.0f ? passes::LightDepthPass::Output::Range
+                                                : passes::LightDepthPass::Output::Depth),
       middle_at_(middle_at) {
     const gl::Defines defines = {{"ORDER", std::to_string(order)},
                                  {"MIDDLE", middle_at > 0.0f ? "1" : "0"}};
@@ -41,7 +41,9 @@ CsmMaps::CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at
             gl::buildProgram("css basis row sums", {"techniques/css/basis.comp"}, rows);
     }
     if (middle_at > 0.0f)
-        far_ = std::make_unique<passes::LightDepthTarget>(map_size, "css far map");
+        range_ = std::make_unique<passes::LightDepthRangeTarget>(map_size, "css shadow maps");
+    else
+        depth_ = std::make_unique<passes::LightDepthTarget>(map_size, "css shadow map");
     // Centred values are 0 for empty texels, so outside the map is the zero border colour.
     const float border[4] = {0, 0, 0, 0};
     if (mipmap) {
@@ -67,9 +69,10 @@ void CsmMaps::renderDepth(const passes::GpuScene& scene, const scene::RectLight&
                           const passes::LightWindow& w, const DepthRange& range) {
     const passes::LightDepthView view{w.viewProj(light), range.near,
                                       1.0f / (range.far - range.near)};
-    depth_.render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, false);
-    if (far_)
-        far_->render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, true);
+    if (range_)
+        range_->render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view);
+    else
+        depth_->render(scene, depth_pass_, passes::GpuScene::Filter::Casters, light, view, false);
 }
 
 void CsmMaps::buildBasis(Filter filter) {
@@ -78,9 +81,13 @@ void CsmMaps::buildBasis(Filter filter) {
     if (!sat && !basis_program_) throw RuntimeError("css: mipmaps were not prepared");
     const gl::Program& program = sat ? sat_rows_program_ : basis_program_;
     glUseProgram(program.id());
-    if (far_) gl::setUniform(program, "u_middle_at", middle_at_);
-    glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_.depth.id());
-    if (far_) glBindTextureUnit(CSS_UNIT_BASIS_FAR, far_->depth.id());
+    if (range_) {
+        gl::setUniform(program, "u_middle_at", middle_at_);
+        glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, range_->nearest.id());
+        glBindTextureUnit(CSS_UNIT_BASIS_FAR, range_->farthest.id());
+    } else {
+        glBindTextureUnit(CSS_UNIT_BASIS_DEPTH, depth_->depth.id());
+    }
     glBindImageTexture(CSS_IMAGE_BASIS, sat ? sat_->table().id() : basis_.id(), 0, GL_TRUE, 0,
                        GL_WRITE_ONLY, GL_RGBA32F);
     if (sat) {  // an invocation per row

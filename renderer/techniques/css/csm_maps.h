@@ -43,7 +43,8 @@ public:
     // caster surface instead of the nearest (a second, farthest-surface map); 0: the nearest.
     CsmMaps(int map_size, int order, bool mipmap, bool sat, float middle_at);
 
-    // The caster depth map seen through WINDOW (and with MIDDLE_AT the farthest surfaces').
+    // The caster depth map seen through WINDOW (and with MIDDLE_AT the farthest surfaces', in
+    // the same draw).
     void renderDepth(const passes::GpuScene& scene, const scene::RectLight& light,
                      const passes::LightWindow& window, const DepthRange& range);
     // The basis of the depth map (centred on their empty-texel values) for FILTER: with
@@ -62,8 +63,8 @@ public:
 
 private:
     int map_size_, layers_;
-    passes::LightDepthTarget depth_;
-    std::unique_ptr<passes::LightDepthTarget> far_;  // the farthest surfaces, with middle_at
+    std::unique_ptr<passes::LightDepthTarget> depth_;       // the nearest surfaces, or
+    std::unique_ptr<passes::LightDepthRangeTarget> range_;  // with middle_at, both in one draw
 
     gl::Texture basis_;  // mipmapped (written only for the mipmaps)
     gl::Sampler search_sampler_;
