@@ -77,6 +77,8 @@ TEST(DrawInTurnGL, EachDrawWritesOnlyThePixelsNoEarlierDrawSettled) {
                 EXPECT_EQ(got[size_t(y * size + x)], want) << "pixel " << x << "," << y;
             }
     }
+    glDepthMask(GL_TRUE);  // GL's defaults again, for the tests after this one
+    glDepthFunc(GL_LESS);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     passes::CoverDepth::detach(fbo.id());

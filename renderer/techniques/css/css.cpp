@@ -187,14 +187,24 @@ private:
         // pixels it left. The fine pass costs its every line at every pixel of a block it
         // shades, whatever the pixel's branch; marking those pixels costs eight lookups:
         // css_visibility at 1024 x 768 on light_size_2 63 -> 51 ms, the same image.
-        passes::drawInTurn({[&] {
-                                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                                draw(ctx, programs.settled, light, w, range, filter);
-                                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                            },
+        passes::drawInTurn({[&] { drawSettled(ctx, programs.settled); },
                             [&] { draw(ctx, programs.fine, light, w, range, filter); },
                             [&] { draw(ctx, programs.every, light, w, range, filter); }});
         glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+    }
+
+    // visibility_settled.frag's draw (P), which writes no colour and reads the G-buffer's
+    // position and ids, the caster flags and the coarse samples (bound by the caller).
+    void drawSettled(frame::FrameContext& ctx, const gl::Program& p) {
+        glUseProgram(p.id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_POSITION, ctx.gbuffer.position().id());
+        glBindTextureUnit(CSS_UNIT_VISIBILITY_ID, ctx.gbuffer.id().id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, passes::kBindingCasterFlags,
+                         ctx.gpu.casterFlags().id());
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        fullscreen_.draw();
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glUseProgram(0);
     }
 
     // One full-viewport draw of P (a visibility program) into the bound framebuffer.
