@@ -52,13 +52,12 @@ void main() {
         o_visibility = vec4(0.0);  // no surface: blending adds nothing
         return;
     }
-#else
-    if (pos.w == 0.0) discard;
 #endif
     bool casts = objectCasts(texelFetch(u_id, pix, 0).r);
     int at = pix.y * u_width + pix.x;
     ivec2 tile = pix / u_tile_side;
     int block = int(u_tile_blocks[tile.y * u_tile_columns + tile.x]);
+#if SETTLE
     // A pixel of an object that casts no shadow, lit by every map (most of an image: skip_lit
     // tests only the pixels a caster may shadow, the others' bits stay clear): every view is
     // lit, so the sums below are sum_k w_k and a contribution share of exactly 1: the host's
@@ -72,9 +71,10 @@ void main() {
             return;
         }
     }
-#if SETTLE
     discard;  // for the full evaluation, drawn next
 #else
+    // Drawn after SETTLE 1 (passes::drawInTurn): every pixel here has a surface and needs
+    // the full sums, so no early out and no discard (either costs the whole block on llvmpipe).
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
     vec3 q0 = inLightAxes(pos.xyz);
     vec3 nl = inLightAxes(n);
