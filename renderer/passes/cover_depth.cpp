@@ -25,15 +25,15 @@ void drawCovered(const std::function<void()>& cover, const std::function<void()>
 
 void CoverDepth::attach(GLuint framebuffer, int width, int height) {
     if (texture_.id() == 0 || width != width_ || height != height_) {
-        texture_ = gl::createTexture2D(GL_DEPTH24_STENCIL8, width, height, label_);
+        texture_ = gl::createTexture2D(GL_DEPTH_COMPONENT16, width, height, label_);
         width_ = width;
         height_ = height;
     }
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_STENCIL_ATTACHMENT, texture_.id(), 0);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture_.id(), 0);
 }
 
 void CoverDepth::detach(GLuint framebuffer) {
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, 0, 0);
 }
 
 }  // namespace penumbra::passes

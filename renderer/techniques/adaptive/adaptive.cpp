@@ -332,7 +332,7 @@ const TechniqueInfo kAdaptiveTechnique = {
         const auto m = static_cast<std::uint64_t>(p.get(kMapSize));
         MemoryTerms out = {shadowMapArrayTerm(p, maps)};
         // The lit path's batch and bits (the array's term stays: a bound on both paths), with
-        // the test passes' stencil and the evaluation's depth (4 bytes a pixel each).
+        // the test passes' stencil and the evaluation's depth (two words a pixel bound them).
         out.push_back({"image.width", "the per-pixel shadow bits of the maps",
                        saturatingProduct({pixels, std::uint64_t(maps + 31) / 32 + 2, 4})});
         if (p.getEnum(adaptive::kEvaluation) == adaptive::Evaluation::Accumulate) {

@@ -12,6 +12,7 @@
 
 #include "renderer/gl/handles.h"
 #include "renderer/gl/program.h"
+#include "renderer/passes/cover_depth.h"
 #include "renderer/passes/fullscreen.h"
 #include "renderer/passes/light_windows.h"
 #include "renderer/techniques/bitmask/budget_map.h"
@@ -166,6 +167,7 @@ private:
     gl::Buffer masks_;  // the half-plane tables
     gl::Program classify_, smooth_program_, visibility_;
     gl::Program visibility_cover_;  // visibility.frag's COVER 1: the lit and umbra pixels
+    passes::CoverDepth cover_depth_{"bitmask cover"};  // the pixels visibility_cover_ settled
     gl::Buffer stats_;
     passes::Fullscreen fullscreen_;
 };

@@ -17,7 +17,6 @@ LoqTargets::LoqTargets(int width, int height)
       area_(gl::createTexture2D(GL_RGBA32F, width, height, "bitmask search areas")),
       loq_{gl::createTexture2D(GL_RGBA32F, width, height, "bitmask loq map"),
            gl::createTexture2D(GL_RGBA32F, width, height, "bitmask loq map (filter)")},
-      cover_(gl::createTexture2D(GL_DEPTH24_STENCIL8, width, height, "bitmask cover")),
       classify_fbo_(gl::createFramebuffer("bitmask classify")),
       loq_fbo_{gl::createFramebuffer("bitmask loq 0"), gl::createFramebuffer("bitmask loq 1")} {
     glNamedFramebufferTexture(classify_fbo_.id(), GL_COLOR_ATTACHMENT0, area_.id(), 0);

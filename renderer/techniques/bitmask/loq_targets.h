@@ -19,12 +19,10 @@ public:
     int height() const { return height_; }
     const gl::Texture& area() const { return area_; }
     const gl::Texture& loq(int i) const { return loq_[i]; }
-    // DEPTH24_STENCIL8: the pixels the visibility pass's cover settled (pixel_passes.cpp)
-    const gl::Texture& cover() const { return cover_; }
 
 private:
     int width_, height_;
-    gl::Texture area_, loq_[2], cover_;
+    gl::Texture area_, loq_[2];
     gl::Framebuffer classify_fbo_, loq_fbo_[2];
 };
 

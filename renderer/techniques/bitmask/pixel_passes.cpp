@@ -77,7 +77,7 @@ void Bitmask::smoothLoq(frame::FrameContext& ctx) {
 void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
                          const passes::LightWindow& window) {
     const GLuint output = ctx.bindOutput();
-    glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, targets_->cover().id(), 0);
+    cover_depth_.attach(output, ctx.gbuffer.width(), ctx.gbuffer.height());
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     auto draw = [&](const gl::Program& p) {

@@ -118,20 +118,17 @@ private:
                           nearest.data(), GL_DYNAMIC_DRAW);
     }
 
-    // The depth buffer of the pixels settled in a WIDTH x HEIGHT image (passes::drawInTurn),
-    // and the target of the coarse samples (every other pixel) with its own.
+    // The target of the coarse samples (every other pixel of a WIDTH x HEIGHT image), with the
+    // depth of those settled (passes::drawInTurn).
     void ensureTargets(int width, int height) {
         const int w = (width + 1) / 2, h = (height + 1) / 2;
         if (coarse_.texture && coarse_.width == w && coarse_.height == h) return;
-        coarse_ = {gl::createTexture2D(GL_RGBA32F, w, h, "css coarse samples"),
-                   gl::createTexture2D(GL_DEPTH24_STENCIL8, w, h, "css settled samples"),
-                   gl::createFramebuffer("css coarse samples"),
-                   gl::createTexture2D(GL_DEPTH24_STENCIL8, width, height, "css settled pixels"),
-                   w,
-                   h};
+        coarse_.texture = gl::createTexture2D(GL_RGBA32F, w, h, "css coarse samples");
+        coarse_.fbo = gl::createFramebuffer("css coarse samples");
+        coarse_.width = w;
+        coarse_.height = h;
         glNamedFramebufferTexture(coarse_.fbo.id(), GL_COLOR_ATTACHMENT0, coarse_.texture.id(), 0);
-        glNamedFramebufferTexture(coarse_.fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT,
-                                  coarse_.settled.id(), 0);
+        coarse_.settled.attach(coarse_.fbo.id(), w, h);
         passes::checkFramebuffer(coarse_.fbo, "css coarse samples");
     }
 
@@ -168,10 +165,10 @@ private:
         }
         const GLuint output = ctx.bindOutput();
         ensureTargets(ctx.gbuffer.width(), ctx.gbuffer.height());
-        glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, coarse_.pixels.id(), 0);
+        coarse_.pixels.attach(output, ctx.gbuffer.width(), ctx.gbuffer.height());
         if (settings_.interpolate <= 0.0f) {
             drawCovered(ctx, programs.cover, programs.every, light, w, range, filter);
-            glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+            passes::CoverDepth::detach(output);
             return;
         }
         // Every other pixel (where a caster may shadow it); the rest interpolated where safe,
@@ -190,7 +187,7 @@ private:
         passes::drawInTurn({[&] { drawSettled(ctx, programs.settled); },
                             [&] { draw(ctx, programs.fine, light, w, range, filter); },
                             [&] { draw(ctx, programs.every, light, w, range, filter); }});
-        glNamedFramebufferTexture(output, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+        passes::CoverDepth::detach(output);
     }
 
     // visibility_settled.frag's draw (P), which writes no colour and reads the G-buffer's
@@ -248,9 +245,9 @@ private:
     std::array<Programs, 2> programs_;  // mipmap, SAT
     struct Coarse {
         gl::Texture texture;
-        gl::Texture settled;  // depth: the samples the coarse cover settled
+        passes::CoverDepth settled{"css settled samples"};  // those the coarse cover settled
         gl::Framebuffer fbo;
-        gl::Texture pixels;  // full size, depth: the pixels settled before visibility.frag
+        passes::CoverDepth pixels{"css settled pixels"};  // full size: before visibility.frag
         int width = 0, height = 0;
     } coarse_;
     passes::Fullscreen fullscreen_;
