@@ -20,6 +20,19 @@ out=$("${ab[@]}" --baseline ./other --binary "$PENUMBRA" -t reference --size 32x
     --same -D technique.samples=2 "$scene") || rc=$?
 [ "$rc" -eq 1 ] || fail "different images must exit 1, got $rc: $out"
 echo "$out" | grep -q "^default: the images differ$" || fail "the difference named: $out"
+# --glsl: this build with a changed copy of the shaders (here a shade pass whose beauty is black),
+# the baseline with its own.
+cp -r "$PENUMBRA_SOURCE_DIR/glsl" variant
+sed -i 's|^void main() {|void main() { o_beauty = vec4(0.0); return;|' variant/passes/shade.frag
+grep -q "o_beauty = vec4(0.0); return;" variant/passes/shade.frag || fail "the variant's edit"
+rc=0
+out=$("${ab[@]}" --baseline "$PENUMBRA" --glsl variant -t hard --size 32x24 --rounds 1 --same \
+    "$scene") || rc=$?
+[ "$rc" -eq 1 ] || fail "--glsl's variant must render another image, got $rc: $out"
+out=$("${ab[@]}" --baseline "$PENUMBRA" --glsl "$PENUMBRA_SOURCE_DIR/glsl" -t hard --size 32x24 \
+    --rounds 1 --same "$scene") || fail "--glsl with the same shaders: $out"
+expect_exit 2 "^ab-passes: --glsl nowhere: not a folder$" -- \
+    "${ab[@]}" --baseline "$PENUMBRA" --glsl nowhere -t hard --size 32x24 "$scene"
 expect_exit 2 "^ab-passes: --size 32by24: expected WxH$" -- \
     "${ab[@]}" --baseline "$PENUMBRA" -t hard --size 32by24 "$scene"
 expect_exit 2 "^ab-passes: nowhere.json: no such scene file$" -- \
