@@ -39,6 +39,15 @@ uniform float u_sample_count;
 #include "common/light_horizon.glsl"
 #endif
 
+#if GAP_FILL
+// Per level, each micro-occluder's distance with those below and above it (neighbours.comp;
+// one fetch for the three that gap filling reads): the map's, and the far layer's
+layout(binding = BITMASK_UNIT_VISIBILITY_NEIGHBOURS) uniform sampler2D u_neighbours;
+#if LAYERS == 2
+layout(binding = BITMASK_UNIT_VISIBILITY_FAR_NEIGHBOURS) uniform sampler2D u_far_neighbours;
+#endif
+#endif
+
 // Gap filling's reach (gap_ratio): a neighbour at least this many times farther is not joined
 // (0: any farther one). Bridging a near caster's silhouette to a far caster beside it in the
 // light's view assumes the far one continues behind the near one.
@@ -112,6 +121,17 @@ float occluderDepth(int layer, ivec2 xy, int level) {
     return texelFetch(u_hsm, xy, level).r;
 }
 
+#if GAP_FILL
+// occluderDepth() of (X, Y) with those of (X, Y - 1) and (X, Y + 1), farther than any receiver
+// where the map ends: (distance, below, above).
+vec3 occluderColumn(int layer, ivec2 xy, int level) {
+#if LAYERS == 2
+    if (layer == 1) return texelFetch(u_far_neighbours, xy, level).xyz;
+#endif
+    return texelFetch(u_neighbours, xy, level).xyz;
+}
+#endif
+
 #if BITMASK
 int maskIndex(float u) {
     return clamp(int(ceil(u * float(u_mask_resolution) - 0.5)), 0, u_mask_resolution);
@@ -160,17 +180,26 @@ bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Cov
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
     for (int y = r.y; y <= r.w; ++y) {
         float zl = r.x > 0 ? occluderDepth(layer, ivec2(r.x - 1, y), level) : pz;
+#if GAP_FILL
+        vec3 co = occluderColumn(layer, ivec2(r.x, y), level);
+        float zo = co.x;
+#else
         float zo = occluderDepth(layer, ivec2(r.x, y), level);
+#endif
         for (int x = r.x; x <= r.z; ++x) {
+#if GAP_FILL
+            vec3 cr = x < n - 1 ? occluderColumn(layer, ivec2(x + 1, y), level) : vec3(pz);
+            float zr = cr.x;
+#else
             float zr = x < n - 1 ? occluderDepth(layer, ivec2(x + 1, y), level) : pz;
+#endif
             if (zo < pz) {
                 ++count;
                 vec4 w = occluderWindow(layer, x, y, level, t);
                 vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
                 vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
 #if GAP_FILL
-                float zd = y > 0 ? occluderDepth(layer, ivec2(x, y - 1), level) : pz;
-                float zu = y < n - 1 ? occluderDepth(layer, ivec2(x, y + 1), level) : pz;
+                float zd = co.y, zu = co.z;
                 if (joins(zo, zl, pz)) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
                 if (joins(zo, zr, pz)) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
                 if (joins(zo, zd, pz)) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
@@ -193,6 +222,9 @@ bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Cov
             }
             zl = zo;
             zo = zr;
+#if GAP_FILL
+            co = cr;
+#endif
         }
 #if BITMASK
         if (maskFull(c.m0, c.m1)) return true;

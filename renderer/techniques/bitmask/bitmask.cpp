@@ -31,6 +31,7 @@ Bitmask::Bitmask(const Params& p)
       ysm_size_(p.get(kYsmSize)),
       microrects_(p.getEnum(kOccluders) == Occluders::Microrect),
       microquads_(p.getEnum(kOccluders) == Occluders::Microquad),
+      gap_fill_(p.get(kGapFill)),
       use_bitmask_(p.getEnum(kVisibility) == Visibility::Bitmask),
       bits_(p.get(kBits)),
       pattern_(p.getEnum(bitmask::kPattern)),
@@ -89,6 +90,10 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     }
     if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
     if (microrects_ && far_layer_) far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
+    if (gap_fill_ && !microquads_)
+        neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_);
+    if (gap_fill_ && far_layer_)
+        far_neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_);
     if (budget_map_) budget_texture_ = bitmask::uploadBudgetMap(*budget_map_);
     // ACCEL and GAP_FILL from the table; the rest follow from several parameters.
     gl::Defines defines = gl::paramDefines(kBitmaskParams, params_);
@@ -132,6 +137,14 @@ void Bitmask::render(frame::FrameContext& ctx) {
         if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
         if (far_rects_)
             ctx.pass("bitmask_far_microrects", [&] { far_rects_->build(ranges_->farLayer()); });
+        if (neighbours_ || far_neighbours_)
+            ctx.pass("bitmask_neighbours", [&] {
+                if (neighbours_)
+                    neighbours_->build(ranges_->hsm(), rects_ ? &rects_->depth() : nullptr);
+                if (far_neighbours_)
+                    far_neighbours_->build(ranges_->farLayer(),
+                                           far_rects_ ? &far_rects_->depth() : nullptr);
+            });
     }
     ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
     if (smooth_) ctx.pass("bitmask_smooth", [&] { smoothLoq(ctx); });
@@ -160,9 +173,14 @@ const TechniqueInfo kBitmaskTechnique = {
                            saturatingProduct({m, m, 4 + 11 + 11})},
                           {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};
         // Its pyramid (RG32F mips) and, with microrects, theirs (RGBA32F and R32F, levels 1..).
-        if (p.get(bitmask::kLayers) == 2)
+        const bool far = p.get(bitmask::kLayers) == 2;
+        if (far)
             terms.push_back({"technique.layers", "the far layer's depth ranges and microrects",
                              saturatingProduct({m, m, 11 + 7})});
+        // Gap filling's neighbour depths (RGBA32F mips), per layer.
+        if (p.get(bitmask::kGapFill))
+            terms.push_back({"technique.gap_fill", "the micro-occluders' neighbour depths",
+                             saturatingProduct({m, m, 22, far ? 2u : 1u})});
         return terms;
     }};
 

@@ -19,6 +19,7 @@
 #include "renderer/techniques/bitmask/depth_ranges.h"
 #include "renderer/techniques/bitmask/loq_targets.h"
 #include "renderer/techniques/bitmask/microrects.h"
+#include "renderer/techniques/bitmask/neighbour_depths.h"
 #include "renderer/techniques/bitmask/sample_pattern.h"
 #include "renderer/techniques/param_keys.h"
 #include "renderer/techniques/technique.h"
@@ -150,6 +151,7 @@ private:
     Accel accel_;
     int ysm_size_;
     bool microrects_, microquads_;
+    bool gap_fill_;
     bool use_bitmask_;
     int bits_;
     Pattern pattern_;
@@ -163,6 +165,9 @@ private:
     std::unique_ptr<LoqTargets> targets_;
     std::unique_ptr<MicroRects> rects_;
     std::unique_ptr<MicroRects> far_rects_;  // layers 2 with microrects
+    // gap_fill: each level's distances with their vertical neighbours', the map's (not with
+    // microquads, which read the map their own way) and the far layer's
+    std::unique_ptr<NeighbourDepths> neighbours_, far_neighbours_;
     gl::Texture receives_, samples_, edges_, budget_texture_;
     gl::Buffer masks_;  // the half-plane tables
     gl::Program classify_, smooth_program_, visibility_;

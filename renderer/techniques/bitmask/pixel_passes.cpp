@@ -102,6 +102,11 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
         }
         if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
+        if (neighbours_)
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_NEIGHBOURS, neighbours_->texture().id());
+        if (far_neighbours_)
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_NEIGHBOURS,
+                              far_neighbours_->texture().id());
         if (far_rects_) {
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_EXTENT, far_rects_->extent().id());
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH, far_rects_->depth().id());

@@ -1,0 +1,33 @@
+// `bitmask` gap filling's depths: see neighbour_depths.h.
+#include "renderer/techniques/bitmask/neighbour_depths.h"
+#include "glsl/techniques/bitmask/bindings.glsl"
+
+#include "renderer/gl/program.h"
+
+namespace penumbra::techniques::bitmask {
+
+NeighbourDepths::NeighbourDepths(int map_size) : map_size_(map_size), levels_(1) {
+    while ((map_size_ >> levels_) > 0) ++levels_;
+    texture_ = gl::createTexture2D(GL_RGBA32F, map_size_, map_size_,
+                                   "bitmask micro-occluder neighbours", levels_);
+    program_ = gl::buildProgram("bitmask neighbour depths", {"techniques/bitmask/neighbours.comp"});
+}
+
+void NeighbourDepths::build(const gl::Texture& pyramid, const gl::Texture* rect_depths) {
+    glUseProgram(program_.id());
+    for (int level = 0; level < levels_; ++level) {
+        const int size = map_size_ >> level;
+        const gl::Texture& source = rect_depths && level > 0 ? *rect_depths : pyramid;
+        glBindTextureUnit(BITMASK_UNIT_NEIGHBOURS_SOURCE, source.id());
+        gl::setUniform(program_, "u_level", level);
+        gl::setUniform(program_, "u_size", size);
+        glBindImageTexture(BITMASK_IMAGE_NEIGHBOURS_OUT, texture_.id(), level, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_RGBA32F);
+        const auto groups = static_cast<GLuint>((size + 7) / 8);
+        glDispatchCompute(groups, groups, 1);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+}  // namespace penumbra::techniques::bitmask
