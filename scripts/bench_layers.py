@@ -12,7 +12,7 @@ import subprocess
 import bench_pareto
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-FAR_PASSES = ("bitmask_far_layer", "bitmask_far_microrects")
+FAR_PASSES = ("bitmask_far_layer", "bitmask_far_microrects", "bitmask_far_neighbours")
 
 
 def render(b, binary, scene, layers, label):

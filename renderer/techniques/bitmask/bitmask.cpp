@@ -137,13 +137,14 @@ void Bitmask::render(frame::FrameContext& ctx) {
         if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
         if (far_rects_)
             ctx.pass("bitmask_far_microrects", [&] { far_rects_->build(ranges_->farLayer()); });
-        if (neighbours_ || far_neighbours_)
+        if (neighbours_)
             ctx.pass("bitmask_neighbours", [&] {
-                if (neighbours_)
-                    neighbours_->build(ranges_->hsm(), rects_ ? &rects_->depth() : nullptr);
-                if (far_neighbours_)
-                    far_neighbours_->build(ranges_->farLayer(),
-                                           far_rects_ ? &far_rects_->depth() : nullptr);
+                neighbours_->build(ranges_->hsm(), rects_ ? &rects_->depth() : nullptr);
+            });
+        if (far_neighbours_)
+            ctx.pass("bitmask_far_neighbours", [&] {
+                far_neighbours_->build(ranges_->farLayer(),
+                                       far_rects_ ? &far_rects_->depth() : nullptr);
             });
     }
     ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
