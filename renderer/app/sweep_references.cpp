@@ -64,7 +64,7 @@ void renderReferences(Sweep& sweep) {
         if (!needed || output::isReadableExr(path)) continue;  // a truncated one is redone
         // Another sweep may be rendering it too: each writes its own temporary and renames it
         // (same pixels), so the last rename wins and no reader sees a partial file.
-        removeStaleTemporaries(path);
+        penumbra::removeStaleTemporaries(path);
         if (sweep.progress)
             std::fprintf(stderr, "penumbra: sweep: reference %zu of %zu\n", i + 1,
                          references.size());

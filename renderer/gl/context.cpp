@@ -13,11 +13,6 @@
 namespace penumbra::gl {
 namespace {
 
-std::string glString(GLenum name) {
-    const GLubyte* s = glGetString(name);
-    return s ? reinterpret_cast<const char*>(s) : "";
-}
-
 int glInt(GLenum name) {
     GLint v = 0;
     glGetIntegerv(name, &v);
@@ -41,6 +36,11 @@ bool isSoftwareRenderer(const std::string& renderer) {
 }
 
 }  // namespace
+
+std::string glString(unsigned int name) {
+    const GLubyte* s = glGetString(name);
+    return s ? reinterpret_cast<const char*>(s) : "";
+}
 
 void fillContextInfo(ContextInfo& info) {
     info.vendor = glString(GL_VENDOR);

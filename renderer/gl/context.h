@@ -66,4 +66,8 @@ protected:
 // Reads GL strings and limits from the current context (after glad has loaded).
 void fillContextInfo(ContextInfo& info);
 
+// The current context's string NAME (glGetString: GL_VENDOR, GL_RENDERER, ...), empty where the
+// driver gives none.
+std::string glString(unsigned int name);
+
 }  // namespace penumbra::gl

@@ -14,6 +14,7 @@
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/content_hash.h"
+#include "renderer/gl/context.h"
 
 namespace penumbra::gl {
 namespace {
@@ -26,11 +27,6 @@ struct Header {  // trivial, so it is zeroed whole (padding too) before it is fi
     std::uint32_t format;
     char binary_hash[16];
 };
-
-std::string glString(GLenum name) {
-    const auto* s = reinterpret_cast<const char*>(glGetString(name));
-    return s ? s : "";
-}
 
 // The driver's strings and KEY: what a binary depends on.
 std::string fullKey(const std::string& key) {

@@ -13,7 +13,7 @@
 namespace penumbra::scene {
 namespace {
 
-using json = nlohmann::ordered_json;  // keys in the order a person reads them
+using ordered_json = nlohmann::ordered_json;  // keys in the order a person reads them
 
 // The shortest decimal that reads back as F (0.8f as 0.8, not 0.800000011920929).
 double shortest(float f) {
@@ -26,19 +26,19 @@ double shortest(float f) {
     return static_cast<double>(f);
 }
 
-json vec(const glm::vec2& v) {
+ordered_json vec(const glm::vec2& v) {
     return {shortest(v.x), shortest(v.y)};
 }
-json vec(const glm::vec3& v) {
+ordered_json vec(const glm::vec3& v) {
     return {shortest(v.x), shortest(v.y), shortest(v.z)};
 }
 
-json cameraJson(const Camera& c) {
+ordered_json cameraJson(const Camera& c) {
     return {{"position", vec(c.position)}, {"target", vec(c.target)},  {"up", vec(c.up)},
             {"fov_y", shortest(c.fov_y)},  {"near", shortest(c.near)}, {"far", shortest(c.far)}};
 }
 
-json lightJson(const RectLight& l) {
+ordered_json lightJson(const RectLight& l) {
     return {{"type", "rect"},
             {"position", vec(l.position)},
             {"target", vec(l.target)},
@@ -49,7 +49,7 @@ json lightJson(const RectLight& l) {
 }
 
 // The floor under MODEL: a square kFloorSide x the bounding radius, its top at the lowest point.
-json floorJson(const Bounds& model) {
+ordered_json floorJson(const Bounds& model) {
     const float side = kFloorSide * model.radius();
     const glm::vec3 center(model.center().x, model.min.y, model.center().z);
     const double albedo = shortest(kFloorAlbedo);
@@ -85,12 +85,12 @@ nlohmann::ordered_json gltfSceneDocument(const GltfFile& file, const std::string
     std::vector<RectLight> lights = lightsFromGltf(file, options.light_size);
     if (lights.empty()) lights.push_back(defaultLight(model, options.light_size));
 
-    json doc = {{"format", kSceneFormat},
-                {"name", name},
-                {"camera", cameraJson(camera)},
-                {"image", {{"width", image.width}, {"height", image.height}}},
-                {"lights", json::array()},
-                {"objects", json::array({{{"name", name}, {"gltf", gltf_path}}})}};
+    ordered_json doc = {{"format", kSceneFormat},
+                        {"name", name},
+                        {"camera", cameraJson(camera)},
+                        {"image", {{"width", image.width}, {"height", image.height}}},
+                        {"lights", ordered_json::array()},
+                        {"objects", ordered_json::array({{{"name", name}, {"gltf", gltf_path}}})}};
     for (const RectLight& light : lights) doc["lights"].push_back(lightJson(light));
     if (options.floor) doc["objects"].push_back(floorJson(model));
     return doc;
@@ -117,7 +117,7 @@ nlohmann::ordered_json gltfSceneFor(const std::filesystem::path& gltf,
         reference =
             (ec || relative.empty() ? std::filesystem::absolute(gltf) : relative).generic_string();
     }
-    json doc = gltfSceneDocument(*file, reference, gltf.stem().string(), options, image);
+    ordered_json doc = gltfSceneDocument(*file, reference, gltf.stem().string(), options, image);
     const SceneContext context{scene_file.string(), folder, scene_file.stem().string(),
                                kMaxImageSize, &assets};
     (void)buildScene(nlohmann::json::parse(doc.dump()), context);  // it loads: values checked

@@ -24,7 +24,7 @@ namespace {
 
 constexpr int kStripRows = 64;  // rows decoded per read: the most memory a lie in a header costs
 
-std::string oneLine(std::string why) {
+std::string reasonSuffix(std::string why) {
     std::replace(why.begin(), why.end(), '\n', ' ');
     return why.empty() ? "" : ": " + quoteText(why);
 }
@@ -67,7 +67,7 @@ FloatImage readOpened(ImageDecoder& input, const std::string& label, int max_siz
         image.pixels.resize(row * static_cast<std::size_t>(y1));
         float* out = image.pixels.data() + row * static_cast<std::size_t>(y0);
         if (!input.readRows(y0, y1, image.channels, out))
-            throw InputError(label + ": cannot read pixels" + oneLine(input.error()));
+            throw InputError(label + ": cannot read pixels" + reasonSuffix(input.error()));
     }
     input.close();
     requireFinite(image, label);
@@ -155,7 +155,7 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
     const QuietStderr quiet;
     std::string why;
     auto input = oiio.open(path.string(), why);
-    if (!input) throw InputError(label + ": cannot read image" + oneLine(why));
+    if (!input) throw InputError(label + ": cannot read image" + reasonSuffix(why));
     return readOpened(*input, label, max_size, channels);
 }
 
@@ -169,7 +169,7 @@ FloatImage readFloatImageFromMemory(const unsigned char* bytes, std::size_t size
     const QuietStderr quiet;
     std::string why;
     auto input = oiio.openMemory(bytes, size, std::string(extension), why);
-    if (!input) throw InputError(label + ": cannot read image" + oneLine(why));
+    if (!input) throw InputError(label + ": cannot read image" + reasonSuffix(why));
     return readOpened(*input, label, max_size, channels);
 }
 

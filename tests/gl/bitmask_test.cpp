@@ -41,14 +41,14 @@ const std::vector<float>& truthOf(const std::string& scene) {
     return channel(truthImage(scene), "visibility");
 }
 
-struct Run {
+struct BitmaskRun {
     penumbra::output::Image image;
     nlohmann::json stats;
     double mae = 0;
 };
 
-Run run(const std::string& scene, const std::string& technique) {
-    Run r;
+BitmaskRun run(const std::string& scene, const std::string& technique) {
+    BitmaskRun r;
     r.image = renderScene(scene, {{"technique", technique}}, 0, &r.stats);
     r.mae = penumbra::testing::shadowRegionMae(channel(r.image, "visibility"), truthOf(scene));
     return r;

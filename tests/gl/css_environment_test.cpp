@@ -13,13 +13,13 @@ using penumbra::testing::channel;
 
 namespace {
 
-struct Render {
+struct EnvironmentRender {
     penumbra::output::Image image;
     nlohmann::json stats;
 };
 
-Render render(const std::string& technique) {
-    Render r;
+EnvironmentRender renderEnvironment(const std::string& technique) {
+    EnvironmentRender r;
     r.image =
         penumbra::testing::renderScene("environment.json", {{"technique", technique}}, 0, &r.stats);
     return r;
@@ -44,13 +44,14 @@ double beautyError(const penumbra::output::Image& ref, const penumbra::output::I
 }  // namespace
 
 TEST(CssEnvironmentGL, ErrorFallsAsLightsAreAdded) {
-    const auto ref = render(R"({"name": "reference", "env_samples": 1024, "map_size": 128})");
+    const auto ref =
+        renderEnvironment(R"({"name": "reference", "env_samples": 1024, "map_size": 128})");
     EXPECT_EQ(ref.stats.value("lights", 0), 0);  // the frame's own count is added by the job
     EXPECT_EQ(ref.stats.value("maps_rendered", 0), 1024);
     double last = 1e9;
     for (int n : {15, 30, 45, 60}) {
-        const auto r =
-            render(R"({"name": "css", "map_size": 256, "env_lights": )" + std::to_string(n) + "}");
+        const auto r = renderEnvironment(R"({"name": "css", "map_size": 256, "env_lights": )" +
+                                         std::to_string(n) + "}");
         const double error = beautyError(ref.image, r.image);
         const double captured = r.stats.value("energy_captured", 0.0);
         std::printf("css, %d environment lights: %.1f%% of the energy, floor beauty error %.4f\n",
@@ -95,8 +96,8 @@ void expectClose(const penumbra::output::Image& every, const penumbra::output::I
 
 TEST(CssEnvironmentGL, InterpolationKeepsEachLightsVisibility) {
     const std::string css = R"({"name": "css", "map_size": 256, "env_lights": 12)";
-    const auto every = render(css + R"(, "interpolate": 0})");
-    const auto interpolated = render(css + R"(, "interpolate": 0.05})");
+    const auto every = renderEnvironment(css + R"(, "interpolate": 0})");
+    const auto interpolated = renderEnvironment(css + R"(, "interpolate": 0.05})");
     expectClose(every.image, interpolated.image, "visibility", "environment, 12 lights,");
     const std::string scene = "../../../scenes/conformance/three_lights.json";
     const std::vector<penumbra::scene::Override> size = {{"image.width", "160"},

@@ -92,11 +92,11 @@ const Bounds* boundsOf(const std::string& name) {
     return nullptr;
 }
 
-const std::vector<penumbra::scene::Override> kSize = {{"image.width", "128"},
-                                                      {"image.height", "96"}};
+const std::vector<penumbra::scene::Override> kSmallImage = {{"image.width", "128"},
+                                                            {"image.height", "96"}};
 
 std::vector<penumbra::scene::Override> withTechnique(const std::string& name) {
-    auto o = kSize;
+    auto o = kSmallImage;
     o.push_back({"technique", R"({"name": ")" + name + R"("})"});
     return o;
 }
@@ -106,7 +106,7 @@ const penumbra::output::Image& exactOf(const std::string& scene) {
     static std::map<std::string, penumbra::output::Image> images;
     auto it = images.find(scene);
     if (it == images.end()) {
-        auto o = kSize;
+        auto o = kSmallImage;
         o.push_back({"technique", penumbra::testing::kGroundTruth});
         it = images.emplace(scene, renderScene(scene, o)).first;
     }

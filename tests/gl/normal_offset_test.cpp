@@ -24,7 +24,7 @@ std::string technique(const std::string& name, int map_size, double offset,
            R"(, "normal_offset": )" + std::to_string(offset) + extra + "}";
 }
 
-penumbra::output::Image render(const std::string& block) {
+penumbra::output::Image renderBlock(const std::string& block) {
     return renderScene(kScene, {{"technique", block}});
 }
 
@@ -47,8 +47,8 @@ TEST(NormalOffsetGL, MovesOnlyReceiversThatCast) {
     // refinement compares the ball's pixels too, so its maps may differ.)
     for (const std::string name : {"hard", "reference"}) {
         const std::string extra = name == "reference" ? R"(, "samples": 3)" : "";
-        const auto none = render(technique(name, 256, 0.0, extra));
-        const auto large = render(technique(name, 256, 6.0, extra));
+        const auto none = renderBlock(technique(name, 256, 0.0, extra));
+        const auto large = renderBlock(technique(name, 256, 6.0, extra));
         EXPECT_EQ(differingPixels(none, large, 0), 0) << name;
         EXPECT_GT(differingPixels(none, large, 1), 0) << name;
     }
@@ -64,9 +64,9 @@ TEST(NormalOffsetGL, ContactHoldsWithCoarseMaps) {
         // adaptive's max_texel 0: every map at map_size (ball_contact's would take 256 maps).
         const std::string extra = name == "reference" ? R"(, "samples": 8)" : R"(, "max_texel": 0)";
         const double coarse =
-            penumbra::testing::floorShadowMae(truth, render(technique(name, 256, 1.5, extra)));
-        const double fine =
-            penumbra::testing::floorShadowMae(truth, render(technique(name, 1024, 1.5, extra)));
+            penumbra::testing::floorShadowMae(truth, renderBlock(technique(name, 256, 1.5, extra)));
+        const double fine = penumbra::testing::floorShadowMae(
+            truth, renderBlock(technique(name, 1024, 1.5, extra)));
         std::printf("%s on %s: 256 maps %.5f, 1024 maps %.5f\n", name.c_str(), kScene, coarse,
                     fine);
         EXPECT_LE(coarse, fine + 0.002) << name;

@@ -21,8 +21,8 @@ const std::string kDefault = "../../../scenes/default.json";
 const std::vector<penumbra::scene::Override> kSmall = {{"image.width", "256"},
                                                        {"image.height", "192"}};
 
-Image render(const std::string& scene, const std::string& technique,
-             std::vector<penumbra::scene::Override> o = {}) {
+Image renderLayers(const std::string& scene, const std::string& technique,
+                   std::vector<penumbra::scene::Override> o = {}) {
     o.push_back({"technique", technique});
     return renderScene(scene, o);
 }
@@ -56,9 +56,9 @@ TEST(SsmLayersGL, BothObjectsShadowTheFloorAndReceive) {
     // default role both. With one receiver map of every receiving object (the earlier default)
     // the floor under them was missing from it and stayed white (0.13-0.20 too light).
     auto o = kSmall;
-    const Image exact = render(kDefault, penumbra::testing::kGroundTruth, o);
-    const Image one = render(kDefault, ssm(1), o);
-    const Image four = render(kDefault, ssm(4), o);
+    const Image exact = renderLayers(kDefault, penumbra::testing::kGroundTruth, o);
+    const Image one = renderLayers(kDefault, ssm(1), o);
+    const Image four = renderLayers(kDefault, ssm(4), o);
     const double floor1 = penumbra::testing::floorShadowMae(exact, one);
     const double floor4 = penumbra::testing::floorShadowMae(exact, four);
     const double objects1 = visibilityMae(one, exact, 1, 3);
@@ -86,8 +86,8 @@ TEST(SsmLayersGL, AnOverhangShadowsItsOwnObjectBeneath) {
     const std::vector<penumbra::scene::Override> o = {{"image.width", "160"},
                                                       {"image.height", "120"}};
     const std::string scene = "../../../scenes/conformance/duck_resting.json";
-    const Image exact = render(scene, penumbra::testing::kGroundTruth, o);
-    const Image four = render(scene, ssm(4), o);
+    const Image exact = renderLayers(scene, penumbra::testing::kGroundTruth, o);
+    const Image four = renderLayers(scene, ssm(4), o);
     const double duck = visibilityMae(four, exact, 1, 1);
     std::printf("ssm layers 4, duck_resting: the duck's visibility MAE %.4f\n", duck);
     EXPECT_LE(duck, 0.12);
@@ -111,8 +111,8 @@ TEST(SsmLayersGL, OneLayerIsThePapersSplit) {
     // layers 1: objects of role both occlude only, the role-receiver floor receives. Nothing
     // shadows the objects: they see the light above their own horizon, which layers 4 takes as
     // well, times the other casters' shadows (the duck's on itself, the pillar's foot).
-    const Image img = render(kDefault, ssm(1), kSmall);
-    const Image received = render(kDefault, ssm(4), kSmall);
+    const Image img = renderLayers(kDefault, ssm(1), kSmall);
+    const Image received = renderLayers(kDefault, ssm(4), kSmall);
     const auto& v = channel(img, "visibility");
     const auto& v4 = channel(received, "visibility");
     const auto& id = channel(img, "id");
@@ -132,7 +132,7 @@ TEST(SsmLayersGL, OneLayerIsThePapersSplit) {
     EXPECT_GT(shadowed_floor, 500);
     // Without a role-receiver object there is nothing to receive: refused, naming the way out.
     try {
-        render("lone_sphere.json", ssm(1), {{"objects.0.shadow", "both"}});
+        renderLayers("lone_sphere.json", ssm(1), {{"objects.0.shadow", "both"}});
         ADD_FAILURE() << "expected an InputError";
     } catch (const penumbra::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("layers > 1"), std::string::npos) << e.what();
@@ -305,11 +305,11 @@ TEST(SsmLayersGL, TheFarSideIsTheSurfaceBeyondTheFrontNotTheFloor) {
     const std::string scene = "../../../scenes/conformance/both_everywhere.json";
     const std::vector<penumbra::scene::Override> o = {{"image.width", "160"},
                                                       {"image.height", "120"}};
-    const Image exact = render(scene, penumbra::testing::kGroundTruth, o);
-    const double second =
-        penumbra::testing::floorShadowMae(exact, render(scene, R"({"name": "ssm", "seal": 0})", o));
+    const Image exact = renderLayers(scene, penumbra::testing::kGroundTruth, o);
+    const double second = penumbra::testing::floorShadowMae(
+        exact, renderLayers(scene, R"({"name": "ssm", "seal": 0})", o));
     const double farthest = penumbra::testing::floorShadowMae(
-        exact, render(scene, R"({"name": "ssm", "seal": 0, "far_side": "farthest"})", o));
+        exact, renderLayers(scene, R"({"name": "ssm", "seal": 0, "far_side": "farthest"})", o));
     std::printf("ssm, both_everywhere floor: shadow-region MAE second %.4f, farthest %.4f\n",
                 second, farthest);
     // Measured 0.0439 and 0.0662.
@@ -327,8 +327,8 @@ TEST(SsmLayersGL, ALowerPlateUnderTwoUpperOnesKeepsItsShadow) {
     const std::string scene = "../../../scenes/conformance/overlap_heights.json";
     const std::vector<penumbra::scene::Override> o = {{"image.width", "160"},
                                                       {"image.height", "120"}};
-    const Image exact = render(scene, penumbra::testing::kGroundTruth, o);
-    const double floor = penumbra::testing::floorShadowMae(exact, render(scene, ssm(4), o));
+    const Image exact = renderLayers(scene, penumbra::testing::kGroundTruth, o);
+    const double floor = penumbra::testing::floorShadowMae(exact, renderLayers(scene, ssm(4), o));
     std::printf("ssm, overlap_heights floor: shadow-region MAE %.4f\n", floor);
     EXPECT_LE(floor, 0.015);
 }

@@ -2,13 +2,15 @@
 #include "renderer/techniques/bitmask/microrects.h"
 #include "glsl/techniques/bitmask/bindings.glsl"
 
+#include <bit>
+
 #include "renderer/gl/program.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 
 namespace penumbra::techniques::bitmask {
 
-MicroRects::MicroRects(int map_size) : map_size_(map_size), levels_(1) {
-    while ((map_size_ >> levels_) > 0) ++levels_;
+MicroRects::MicroRects(int map_size)
+    : map_size_(map_size), levels_(std::bit_width(static_cast<unsigned>(map_size))) {
     extent_ =
         gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "bitmask microrect extents", levels_);
     depth_ =

@@ -2,12 +2,14 @@
 #include "renderer/techniques/bitmask/neighbour_depths.h"
 #include "glsl/techniques/bitmask/bindings.glsl"
 
+#include <bit>
+
 #include "renderer/gl/program.h"
 
 namespace penumbra::techniques::bitmask {
 
-NeighbourDepths::NeighbourDepths(int map_size) : map_size_(map_size), levels_(1) {
-    while ((map_size_ >> levels_) > 0) ++levels_;
+NeighbourDepths::NeighbourDepths(int map_size)
+    : map_size_(map_size), levels_(std::bit_width(static_cast<unsigned>(map_size))) {
     texture_ = gl::createTexture2D(GL_RGBA32F, map_size_, map_size_,
                                    "bitmask micro-occluder neighbours", levels_);
     program_ = gl::buildProgram("bitmask neighbour depths", {"techniques/bitmask/neighbours.comp"});

@@ -6,6 +6,7 @@
 #include "glsl/techniques/ssm/bindings.glsl"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 
 #include "renderer/core/error.h"
@@ -120,8 +121,7 @@ void Ssm::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         "ssm receiver layers");
     if (clip_) {
         max_program_ = gl::buildProgram("ssm receiver max", {"techniques/ssm/receiver_max.comp"});
-        receiver_levels_ = 1;
-        while ((ssm_size_ >> receiver_levels_) > 0) ++receiver_levels_;
+        receiver_levels_ = std::bit_width(static_cast<unsigned>(ssm_size_));
         receiver_max_ = gl::createTexture(GL_TEXTURE_2D_ARRAY, "ssm receiver max pyramids");
         glTextureStorage3D(receiver_max_.id(), receiver_levels_, GL_R32F, ssm_size_, ssm_size_,
                            layers_);

@@ -9,18 +9,14 @@
 
 #include "renderer/output/cryptomatte.h"
 #include "renderer/output/exr.h"
+#include "tests/unit/output/image_attribute.h"
 #include "tests/unit/output/scratch_folder.h"
 
 namespace penumbra::output {
 namespace {
 
+using testing::attribute;
 using testing::ScratchFolder;
-
-std::string attribute(const Image& image, const std::string& name) {
-    for (const auto& [key, value] : image.attributes)
-        if (key == name) return value;
-    return "<missing>";
-}
 
 TEST(Cryptomatte, MurmurHashMatchesReferenceVectors) {
     EXPECT_EQ(murmurHash3(""), 0u);

@@ -14,11 +14,13 @@
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/error.h"
 #include "renderer/output/exr.h"
+#include "tests/unit/output/image_attribute.h"
 #include "tests/unit/output/scratch_folder.h"
 
 namespace penumbra::output {
 namespace {
 
+using testing::attribute;
 using testing::ScratchFolder;
 
 // A 5x3 image (non-square, so a transposed or flipped write shows) holding every kind of
@@ -58,12 +60,6 @@ float roundTripValue(PixelType type, float v) {
 const std::vector<float>& pixelsOf(const Image& image, const std::string& name) {
     if (const ImageChannel* c = image.find(name)) return c->pixels;
     throw std::runtime_error("no channel '" + name + "'");
-}
-
-std::string attribute(const Image& image, const std::string& name) {
-    for (const auto& [key, value] : image.attributes)
-        if (key == name) return value;
-    return "<missing>";
 }
 
 TEST(Exr, RoundTripKeepsChannelsTypesValuesAndAttributes) {

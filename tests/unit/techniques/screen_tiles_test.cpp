@@ -57,8 +57,8 @@ TEST(ScreenTiles, ASplitIsRefinedAroundItsDisagreementsWithinItsOwnTiles) {
 }
 
 TEST(ScreenTiles, EachTileWeighsTheLeavesLiveInIt) {
-    using W = LightQuadtree::Weighting;
-    for (W weighting : {W::Area, W::Paper, W::Equal}) {
+    using Weighting = LightQuadtree::Weighting;
+    for (Weighting weighting : {Weighting::Area, Weighting::Paper, Weighting::Equal}) {
         LightQuadtree tree(3, false);
         const QuadtreeCell root = tree.root();
         // Tiles 0 and 1 of 3: the root split in tile 1 only; one child split further there.
