@@ -178,10 +178,13 @@ const TechniqueInfo kBitmaskTechnique = {
         if (far)
             terms.push_back({"technique.layers", "the far layer's depth ranges and microrects",
                              saturatingProduct({m, m, 11 + 7})});
-        // Gap filling's neighbour depths (RGBA32F mips), per layer.
-        if (p.get(bitmask::kGapFill))
+        // Gap filling's neighbour depths (RGBA32F mips), per layer that has them: the map's
+        // only without microquads (they read the map their own way), the far layer's always.
+        const bool quads = p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microquad;
+        const std::uint64_t gap_layers = (quads ? 0u : 1u) + (far ? 1u : 0u);
+        if (p.get(bitmask::kGapFill) && gap_layers > 0)
             terms.push_back({"technique.gap_fill", "the micro-occluders' neighbour depths",
-                             saturatingProduct({m, m, 22, far ? 2u : 1u})});
+                             saturatingProduct({m, m, 22, gap_layers})});
         return terms;
     }};
 
