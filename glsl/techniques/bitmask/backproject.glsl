@@ -46,7 +46,6 @@ layout(binding = BITMASK_UNIT_VISIBILITY_NEIGHBOURS) uniform sampler2D u_neighbo
 #if LAYERS == 2
 layout(binding = BITMASK_UNIT_VISIBILITY_FAR_NEIGHBOURS) uniform sampler2D u_far_neighbours;
 #endif
-#endif
 
 // Gap filling's reach (gap_ratio): a neighbour at least this many times farther is not joined
 // (0: any farther one). Bridging a near caster's silhouette to a far caster beside it in the
@@ -58,6 +57,16 @@ uniform float u_gap_ratio;
 bool joins(float zo, float zn, float pz) {
     return zn > zo && zn < pz && (u_gap_ratio <= 0.0 || zn < zo * u_gap_ratio);
 }
+
+// The distance of the micro-occluder at (X, Y) of LAYER's LEVEL with those of (X, Y - 1) and
+// (X, Y + 1), farther than any receiver where the map ends: (distance, below, above).
+vec3 occluderColumn(int layer, ivec2 xy, int level) {
+#if LAYERS == 2
+    if (layer == 1) return texelFetch(u_far_neighbours, xy, level).xyz;
+#endif
+    return texelFetch(u_neighbours, xy, level).xyz;
+}
+#endif
 
 // The light-plane coordinate of the ray from receiver coordinate P (depth PZ) through window
 // coordinate W at distance Z: z (w pz - p) / (pz - z).
@@ -120,17 +129,6 @@ float occluderDepth(int layer, ivec2 xy, int level) {
 #endif
     return texelFetch(u_hsm, xy, level).r;
 }
-
-#if GAP_FILL
-// occluderDepth() of (X, Y) with those of (X, Y - 1) and (X, Y + 1), farther than any receiver
-// where the map ends: (distance, below, above).
-vec3 occluderColumn(int layer, ivec2 xy, int level) {
-#if LAYERS == 2
-    if (layer == 1) return texelFetch(u_far_neighbours, xy, level).xyz;
-#endif
-    return texelFetch(u_neighbours, xy, level).xyz;
-}
-#endif
 
 #if BITMASK
 int maskIndex(float u) {
