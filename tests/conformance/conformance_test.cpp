@@ -1,4 +1,4 @@
-// The conformance label: every technique at its defaults on 12 scenes of the conformance corpus
+// The conformance label: every technique at its defaults on 13 scenes of the conformance corpus
 // (scenes/conformance) at 128 x 96, against `exact` (N = 16), in process. Each run's worst
 // shadow-region MAE over the receiving objects must stay within its bound; the full corpus at
 // 320 x 240, with contact sheets, is scripts/conformance.
@@ -21,14 +21,23 @@ using penumbra::testing::channel;
 
 namespace {
 
-const std::vector<std::string> kScenes = {
-    "box_resting",        "spheres_three_sizes", "duck_resting",  "light_size_0.25",
-    "light_aspect_1to16", "light_tilt_45",       "bar_grid",      "under_table",
-    "two_lights",         "split_roles",         "stacked_boxes", "tilted_receiver"};
+const std::vector<std::string> kScenes = {"box_resting",
+                                          "spheres_three_sizes",
+                                          "duck_resting",
+                                          "light_size_0.25",
+                                          "light_aspect_1to16",
+                                          "light_tilt_45",
+                                          "bar_grid",
+                                          "under_table",
+                                          "two_lights",
+                                          "split_roles",
+                                          "stacked_boxes",
+                                          "tilted_receiver",
+                                          "fence"};
 
 struct Run {
     std::string label, technique;
-    double bound;     // worst receiver shadow-region MAE allowed over the 12 scenes
+    double bound;     // worst receiver shadow-region MAE allowed over the 13 scenes
     const char* why;  // where the bound comes from
 };
 
@@ -52,10 +61,11 @@ const std::vector<Run> kRuns = {
      "0.0614 with the map's layer alone (the duck's lower body, which the light's centre does "
      "not see); the target 0.05 is met without a margin, so 0.055 is the measurement with one "
      "of 10 %, which a return to one layer fails"},
-    {"css", R"({"name": "css"})", 0.090,
-     "measured 0.0786 (duck_resting: the head's shadow on the body, which one depth map and "
-     "one blocker depth per kernel cannot hold; spheres_three_sizes was 0.0998 before "
-     "self_exclude); target 0.06"},
+    {"css", R"({"name": "css"})", 0.065,
+     "measured 0.0571 (duck_resting: the head's shadow on the body, which one depth map and "
+     "one blocker depth per kernel cannot hold); the target 0.06 is met without a margin, so "
+     "0.065 is the measurement with one of 14 %, which fence fails (0.0693) with a depth range "
+     "that reaches the farthest receiver instead of a gap past the casters"},
 };
 
 std::string scenePath(const std::string& name) {

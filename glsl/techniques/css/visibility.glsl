@@ -47,6 +47,7 @@ uniform vec2 u_window_size;
 uniform float u_near;        // the nearest caster's distance: the filter widths' near plane
 uniform float u_depth_near;  // distances of normalised depth 0 and 1 (csm_maps.h DepthRange)
 uniform float u_depth_far;
+uniform float u_receiver_max;  // receivers past it (normalised) are tested at it: csm_maps.h
 uniform float u_map_size;    // N
 uniform float u_ring_scale;  // ringing suppression: s = clamp(scale (F - 1/2) + 1/2, 0, 1)
 uniform float u_ring_shift;  // the test is evaluated at d - shift
@@ -280,7 +281,9 @@ vec3 cssShadow(Receiver r) {
     vec3 nl = vec3(dot(r.normal, u_light_right), dot(r.normal, u_light_up),
                    dot(r.normal, u_light_forward));
     vec2 texels_per_tan = u_map_size / u_window_size;
-    float d = (zw - u_depth_near) / (u_depth_far - u_depth_near);
+    // The receiver's normalised depth (DR: unclamped, for the contact sharpening's distance).
+    float dr = (zw - u_depth_near) / (u_depth_far - u_depth_near);
+    float d = min(dr, u_receiver_max);
     float ds = max(d - u_ring_shift, 0.0);
     // The test depth under a kernel of S texels: ds, less the drop of the receiver's own
     // plane over u_self_exclude of the kernel's half-width when the receiver is in the map,
@@ -334,7 +337,7 @@ vec3 cssShadow(Receiver r) {
     float f = filteredTestWith(k1, w, empty, false, z_coverage1).x;
     if (z_coverage1.y > 1e-6) f = plateauCorrected(f, ds1 - 1.0 - z_coverage1.x / z_coverage1.y);
     float s = clamp(u_ring_scale * (f - 0.5) + 0.5, 0.0, 1.0);
-    float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (d - z_avg));
+    float p = 1.0 + u_sharpen_a * exp(-u_sharpen_b * (dr - z_avg));
     return vec3(pow(1.0 - s, p), z_avg, max(w1.x, w1.y));
 }
 

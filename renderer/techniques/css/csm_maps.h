@@ -19,18 +19,28 @@ constexpr int basisLayers(int order) {
     return 2 * ((order + 1) / 2) + 1;
 }
 
-// The light-centred view of the map: the casters' window (x, y) with a depth range from the
-// nearest caster to the farthest point of the scene, so every receiver has depth in [0, 1].
-passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes casters,
-                              passes::Boxes scene);
+// The depth normalisation's margin for order M and ring shift SHIFT: min(SHIFT + 0.5 / M,
+// 0.3). The Fourier test is periodic (period 2 in d - z) and rings across a band of about
+// 1 / (2M) around its jumps at d - z = 0 and -1; real depths fill [m, 1 - m] and empty texels
+// hold 1, so every receiver against an empty texel (d - 1 in [m - 1, -m], evaluated at
+// d - shift) stays clear of both.
+float depthMargin(int order, float shift);
 
-// The depth normalisation of the map: real depths fill [m, 1 - m], m = min(shift + 0.5 / M,
-// 0.3), and empty texels hold 1. The Fourier test is periodic (period 2 in d - z) and rings
-// across a band of about 1 / (2M) around its jumps at d - z = 0 and -1; the margin keeps
-// every receiver against an empty texel (d - 1 in [m - 1, -m], evaluated at d - shift) clear
-// of both.
+// The light-centred view of the map: the casters' window (x, y), with a depth range from the
+// nearest caster to the farthest point of the scene or, where that lies farther, to a gap
+// past the farthest caster (the normalised share MARGIN, depthMargin(), and at least a
+// quarter of the farthest caster's distance: csm_maps.cpp): receivers beyond the
+// gap take its depth (DepthRange::receiver_max), behind every caster either way, so a scene's
+// extent behind its casters (a long floor under a low light) does not spend the depth
+// resolution that the series needs between a caster and the receiver behind it.
+passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes casters,
+                              passes::Boxes scene, float margin);
+
+// The depth normalisation of the map for WINDOW (mapWindow()): its near and far land on m and
+// 1 - m (depthMargin()).
 struct DepthRange {
     float near = 0.0f, far = 1.0f;  // distances along the light's forward axis of depth 0 and 1
+    float receiver_max = 1.0f;      // the normalised depth receivers are clamped to: 1 - m
 };
 DepthRange depthRange(const passes::LightWindow& window, int order, float shift);
 

@@ -42,7 +42,8 @@ public:
         const CsmMaps::Filter filter = css::filterFor(settings_, light);
         ensureResources(filter);
         const passes::LightWindow window =
-            css::mapWindow(light, ctx.gpu.casterBoxes(), ctx.gpu.sceneBoxes());
+            css::mapWindow(light, ctx.gpu.casterBoxes(), ctx.gpu.sceneBoxes(),
+                           css::depthMargin(settings_.order, settings_.ring_shift));
         const css::DepthRange range =
             css::depthRange(window, settings_.order, settings_.ring_shift);
         if (!window.empty()) {
@@ -225,6 +226,7 @@ private:
         gl::setUniform(p, "u_near", w.near);
         gl::setUniform(p, "u_depth_near", range.near);
         gl::setUniform(p, "u_depth_far", range.far);
+        gl::setUniform(p, "u_receiver_max", range.receiver_max);
         gl::setUniform(p, "u_map_size", static_cast<float>(settings_.map_size));
         // ring_*, sharpen_*, self_exclude, interpolate
         gl::setParamUniforms(p, css::kCssParams, params_);
