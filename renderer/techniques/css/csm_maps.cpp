@@ -37,8 +37,7 @@ passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes caste
     return w;
 }
 
-DepthRange depthRange(const passes::LightWindow& w, int order, float shift) {
-    const float m = depthMargin(order, shift);
+DepthRange depthRange(const passes::LightWindow& w, float m) {
     const float pad = m * (w.far - w.near) / (1.0f - 2.0f * m);
     return {w.near - pad, w.far + pad, 1.0f - m};
 }

@@ -36,13 +36,13 @@ float depthMargin(int order, float shift);
 passes::LightWindow mapWindow(const scene::RectLight& light, passes::Boxes casters,
                               passes::Boxes scene, float margin);
 
-// The depth normalisation of the map for WINDOW (mapWindow()): its near and far land on m and
-// 1 - m (depthMargin()).
+// The depth normalisation of the map for WINDOW (mapWindow() with the same MARGIN): its near
+// and far land on MARGIN and 1 - MARGIN (depthMargin()).
 struct DepthRange {
     float near = 0.0f, far = 1.0f;  // distances along the light's forward axis of depth 0 and 1
     float receiver_max = 1.0f;      // the normalised depth receivers are clamped to: 1 - m
 };
-DepthRange depthRange(const passes::LightWindow& window, int order, float shift);
+DepthRange depthRange(const passes::LightWindow& window, float margin);
 
 class CsmMaps {
 public:

@@ -41,11 +41,10 @@ public:
         const scene::RectLight& light = ctx.currentLight();
         const CsmMaps::Filter filter = css::filterFor(settings_, light);
         ensureResources(filter);
+        const float margin = css::depthMargin(settings_.order, settings_.ring_shift);
         const passes::LightWindow window =
-            css::mapWindow(light, ctx.gpu.casterBoxes(), ctx.gpu.sceneBoxes(),
-                           css::depthMargin(settings_.order, settings_.ring_shift));
-        const css::DepthRange range =
-            css::depthRange(window, settings_.order, settings_.ring_shift);
+            css::mapWindow(light, ctx.gpu.casterBoxes(), ctx.gpu.sceneBoxes(), margin);
+        const css::DepthRange range = css::depthRange(window, margin);
         if (!window.empty()) {
             ctx.pass("css_shadow_map", [&] { maps_->renderDepth(ctx.gpu, light, window, range); });
             ctx.pass("css_basis", [&] { maps_->buildBasis(filter); });

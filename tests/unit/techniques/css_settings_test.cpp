@@ -61,9 +61,10 @@ TEST(CssSettings, DepthRangeKeepsMargins) {
     w.near = 2.0f, w.far = 6.0f;
     for (int order : {1, 4, 16}) {
         for (float shift : {0.0f, 0.08f}) {
-            const auto r = techniques::css::depthRange(w, order, shift);
             const float m = std::min(shift + 0.5f / static_cast<float>(order), 0.3f);
             EXPECT_FLOAT_EQ(techniques::css::depthMargin(order, shift), m);
+            const auto r =
+                techniques::css::depthRange(w, techniques::css::depthMargin(order, shift));
             // The window's near and far land on m and 1 - m; receivers clamp at 1 - m.
             EXPECT_NEAR((w.near - r.near) / (r.far - r.near), m, 1e-5) << order;
             EXPECT_NEAR((w.far - r.near) / (r.far - r.near), 1.0f - m, 1e-5) << order;
@@ -93,7 +94,7 @@ TEST(CssSettings, TheDepthRangeEndsAGapPastTheCastersNotAtTheFarthestReceiver) {
     const passes::WorldBox shallow[] = {caster[0], boxBetween({-5, -1.2f, -5}, {5, -1.1f, 5})};
     const float m = techniques::css::depthMargin(4, 0.08f);
     const auto range = [&](const passes::LightWindow& w) {
-        return techniques::css::depthRange(w, 4, 0.08f);
+        return techniques::css::depthRange(w, m);
     };
     const auto normalised = [](const techniques::css::DepthRange& r, float z) {
         return (z - r.near) / (r.far - r.near);
