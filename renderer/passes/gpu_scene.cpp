@@ -3,6 +3,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "renderer/scene/mesh_topology.h"
+
 namespace penumbra::passes {
 
 WorldBox::WorldBox(const Bounds& model, const glm::mat4& transform) : valid(!model.empty()) {
@@ -61,6 +63,7 @@ std::unique_ptr<GpuModel> uploadModel(const scene::Model& m) {
         for (const auto& p : mesh.positions) g->bounds.extend(p);
         g->triangles += mesh.indices.size() / 3;
     }
+    g->closed = scene::isClosedSurface(m);
     const std::string label = "model " + m.source;
     g->vao = gl::createVertexArray(label);
     g->positions = uploadBuffer(pos, label + " positions");
@@ -142,6 +145,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
     const auto& declared = gl::programUniforms(program);
     const bool normals = declared.count("u_normal_matrix") > 0;
     const bool ids = declared.count("u_object_id") > 0;
+    const bool closed = declared.count("u_closed") > 0;
     const bool colours = declared.count("u_base_color") > 0;
     const gl::Program* bound = &program;
     const GpuObject* set_for[2] = {nullptr, nullptr};  // whose uniforms each program holds
@@ -172,6 +176,7 @@ void GpuScene::draw(const gl::Program& program, Filter filter, int instances,
                     gl::setUniform(p, "u_normal_matrix",
                                    glm::mat3(glm::inverseTranspose(o.transform)));
                 if (ids) gl::setUniform(p, "u_object_id", o.id);
+                if (closed) gl::setUniform(p, "u_closed", o.model->closed ? 1 : 0);
                 set_for[use_textured] = &o;
             }
             if (colours) gl::setUniform(p, "u_base_color", o.model->base_colors[m]);

@@ -69,6 +69,7 @@ struct GpuModel {
     std::vector<gl::Texture> textures;
     Bounds bounds;  // model space
     size_t triangles = 0;
+    bool closed = false;  // scene::isClosedSurface: no open sheet, back faces lie behind
 };
 
 struct GpuObject {
@@ -100,11 +101,11 @@ public:
     // Receivers: role receiver or both; ReceiversOnly: role receiver.
     enum class Filter { All, Casters, Receivers, ReceiversOnly };
     // Draws the objects FILTER selects with PROGRAM bound by the caller. Sets uniform "u_model"
-    // and those of "u_normal_matrix", "u_object_id", "u_base_color" that PROGRAM's shaders
-    // declare. With TEXTURED (PROGRAM's variant that samples the base colour texture, its other
-    // uniforms set by the caller as PROGRAM's), a draw whose material has a texture (and uvs)
-    // uses it, the texture bound to unit TEXTURE_UNIT, and PROGRAM is bound again after it.
-    // INSTANCES > 1 draws instanced.
+    // and those of "u_normal_matrix", "u_object_id", "u_closed" (GpuModel::closed),
+    // "u_base_color" that PROGRAM's shaders declare. With TEXTURED (PROGRAM's variant that samples
+    // the base colour texture, its other uniforms set by the caller as PROGRAM's), a draw whose
+    // material has a texture (and uvs) uses it, the texture bound to unit TEXTURE_UNIT, and PROGRAM
+    // is bound again after it. INSTANCES > 1 draws instanced.
     void draw(const gl::Program& program, Filter filter, int instances = 1,
               const gl::Program* textured = nullptr, int texture_unit = UNIT_BASE_TEXTURE) const;
 

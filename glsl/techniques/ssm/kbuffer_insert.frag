@@ -7,6 +7,7 @@ in vec3 v_world;
 in vec3 v_normal;
 #include "common/light_frame.glsl"
 uniform int u_object_id;
+uniform int u_closed;  // 1: the object's model is a closed surface (GpuModel::closed)
 uniform int u_nearest_slots;  // slots 0 .. u_nearest_slots - 1, ascending; then the farthest
 uniform bool u_farthest;      // keep the farthest fragment (layers > 1)
 // Cleared to 0xffffffff (the nearest slots) and 0 (the farthest)
@@ -16,7 +17,9 @@ const uint kEmpty = 0xffffffffu;
 const uint kIdMask = (1u << SSM_KBUFFER_ID_BITS) - 1u;
 
 void main() {
-    if (dot(v_normal, u_light_centre - v_world) <= 0.0) return;  // faces away from the light
+    // A solid's face turned away from the light's centre lies behind one turned towards it; an
+    // open sheet's is the side the light sees (a card whose stored normal faces away: mix9200).
+    if (u_closed != 0 && dot(v_normal, u_light_centre - v_world) <= 0.0) return;
     uint q = uint(round(clamp(v_depth, 0.0, 1.0) * float(SSM_KBUFFER_DEPTH_STEPS)));
     uint id = uint(u_object_id);
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -12,10 +12,13 @@ uniform int u_layer;
 uniform float u_peel_gap;
 #include "common/light_frame.glsl"
 uniform int u_object_id;
+uniform int u_closed;  // 1: the object's model is a closed surface (GpuModel::closed)
 layout(location = 0) out int o_id;
 
 void main() {
-    if (dot(v_normal, u_light_centre - v_world) <= 0.0) discard;  // faces away from the light
+    // A solid's face turned away from the light's centre lies behind one turned towards it; an
+    // open sheet's is the side the light sees (a card whose stored normal faces away: mix9200).
+    if (u_closed != 0 && dot(v_normal, u_light_centre - v_world) <= 0.0) discard;
     float d = clamp(v_depth, 0.0, 1.0);
     if (u_layer > 0) {
         float before = texelFetch(u_previous, ivec3(ivec2(gl_FragCoord.xy), u_layer - 1), 0).r;

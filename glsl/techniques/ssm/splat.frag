@@ -28,7 +28,7 @@ uniform float u_depth_bias;  // a patch must be this fraction of z_R nearer than
 layout(binding = SSM_UNIT_SPLAT_LAYER_IDS) uniform isampler2DArray u_layer_ids;
 // Per receiver layer: the unit normal of its surface in the light's frame (receiver_planes.comp)
 layout(binding = SSM_UNIT_SPLAT_PLANES) uniform sampler2DArray u_planes;
-uniform int u_layer_count;
+uniform int u_layered;  // 1: receiver layers with object ids (LAYERS > 1), however many hold one
 
 flat in vec4 v_rect;  // the patch in window units at distance 1 (x0, y0, x1, y1)
 flat in float v_depth;
@@ -249,7 +249,7 @@ void main() {
     // plane it could hide only light below the horizon, which the visibility pass takes in
     // closed form. Not where it merely lies in front of that surface at its texel: a box's top
     // face in front of its steep lit wall striped the wall (random scene rand20: 0.31).
-    bool own = u_layer_count > 1 && texelFetch(u_layer_ids, ivec3(texel, u_layer), 0).r == v_object;
+    bool own = u_layered != 0 && texelFetch(u_layer_ids, ivec3(texel, u_layer), 0).r == v_object;
 #if SAMPLES
     // The samples hidden here so far: a snapshot, but bits are only ever set, so a patch whose
     // samples are all among them adds nothing (no atomic), and a texel that hides the whole

@@ -46,7 +46,7 @@ uniform vec2 u_ssm_lo;
 uniform vec2 u_ssm_size;
 uniform int u_shadowed;     // 0: no occluder lies between the light and a receiver
 uniform int u_layer_count;  // receiver layers
-uniform int u_self_horizon;  // 1: objects that cast also receive (layers > 1), horizon included
+uniform int u_layered;  // 1: LAYERS > 1 (depth-matched layers; objects that cast also receive)
 uniform float u_near;       // the soft-shadow window's depth range
 uniform float u_range;
 uniform float u_depth_bias;
@@ -141,7 +141,7 @@ bool receiverVisibility(vec3 pos, vec3 n, int id, out float v, out int layer, ou
     vec2 uv = (vec2(dot(d, u_light_right), dot(d, u_light_up)) / z - u_ssm_lo) / u_ssm_size;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return true;
     float occlusion;
-    if (u_layer_count == 1) {
+    if (u_layered == 0) {
         // The paper: one receiver map, looked up without a depth match.
         occlusion = texture(u_ssm, vec3(uv, 0.0)).r;
 #if TWO_SIDED
@@ -209,7 +209,7 @@ bool receiverVisibility(vec3 pos, vec3 n, int id, out float v, out int layer, ou
     // An object's patches never shadow the surface they lie on (splat.vert): the light's part
     // below that surface's horizon, which the object itself hides, is taken in closed form, as
     // css does; the other casters' occlusion falls on the rest alike.
-    horizon = u_self_horizon != 0 && objectCasts(id);
+    horizon = u_layered != 0 && objectCasts(id);
     return true;
 }
 

@@ -189,7 +189,7 @@ void Ssm::splat(const scene::RectLight& light, const LightWindow& occ, const Lig
         gl::setUniform(p, "u_occ_range", occ.far - occ.near);
         gl::setUniform(p, "u_far_side", side > 0 ? 1 : 0);
         gl::setUniform(p, "u_far_empty", emptyDepth(side));
-        gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
+        gl::setUniform(p, "u_layered", layers_ > 1 ? 1 : 0);
         gl::setUniform(p, "u_light_half", 0.5f * light.size);
         gl::setUniform(p, "u_ssm_lo", soft.lo);
         gl::setUniform(p, "u_ssm_size", soft.size);

@@ -40,7 +40,7 @@ void Ssm::visibility(frame::FrameContext& ctx, const scene::RectLight& light,
         passes::setLightFrameUniforms(p, light);
         gl::setUniform(p, "u_light_size", light.size);
         gl::setUniform(p, "u_layer_count", layers_ == 1 ? 1 : std::max(used_layers_, 1));
-        gl::setUniform(p, "u_self_horizon", layers_ > 1 ? 1 : 0);
+        gl::setUniform(p, "u_layered", layers_ > 1 ? 1 : 0);
         gl::setUniform(p, "u_near", soft.near);
         gl::setUniform(p, "u_range", soft.far - soft.near);
         gl::setParamUniforms(p, kSsmParams, params_);  // depth_bias
