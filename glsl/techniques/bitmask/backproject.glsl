@@ -168,12 +168,30 @@ struct Coverage {
     float occluded;  // BITMASK 0
 };
 
+// Whether the micro-occluder W (window rectangle, at distance 1) at depth ZO could be the flat
+// receiver face's own (its tangent plane PLANE, receiverAt(); none where 0): one lies at the
+// face's nearest depth over W, so it meets the plane at one corner (within a level-0 texel's
+// span) and rises above it at most by the plane's depth span over W, ZO (|n.x| w + |n.y| h), at
+// the others. Such a one hides only light that the face's far side hides (the horizon's samples,
+// set already) or a sliver above it. Left in, coarse levels shaded faces nearly edge-on to the
+// light in bands, which an offset along the normal had cleared by moving the receiver sideways.
+// A caster wholly above the plane is kept, however near.
+bool ownSurface(vec4 plane, vec4 w, float zo) {
+    if (plane.xyz == vec3(0.0)) return false;
+    vec2 x = plane.x * w.xz, y = plane.y * w.yw;  // each corner's height: (x + y + n.z) zo - d
+    float highest = (max(x.x, x.y) + max(y.x, y.y) + plane.z) * zo - plane.w;
+    float lowest = (min(x.x, x.y) + min(y.x, y.y) + plane.z) * zo - plane.w;
+    vec2 n = abs(plane.xy);
+    return lowest <= dot(n, u_texel) * zo && highest <= dot(n, w.zw - w.xy) * zo;
+}
+
 // Back-projects the micro-occluders of LEVEL of LAYER in the texel range R (levelRange()) for
-// receiver P (biased depth PZ) into C; COUNT += those back-projected. A row's depths slide along
-// it (each texel read once; GAP_FILL reads its left and right neighbours from there), and with a
-// bitmask the rows stop once every light sample is occluded; returns whether they did.
-bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Coverage c,
-                      inout int count) {
+// receiver P (biased depth PZ) into C, but those ownSurface() finds of P's tangent plane PLANE;
+// COUNT += those back-projected. A row's depths slide along it (each texel read once; GAP_FILL
+// reads its left and right neighbours from there), and with a bitmask the rows stop once every
+// light sample is occluded; returns whether they did.
+bool backprojectLayer(int layer, vec3 p, vec4 plane, float pz, ivec4 r, int level,
+                      inout Coverage c, inout int count) {
     int n = u_map_size >> level;
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
     for (int y = r.y; y <= r.w; ++y) {
@@ -191,9 +209,9 @@ bool backprojectLayer(int layer, vec3 p, float pz, ivec4 r, int level, inout Cov
 #else
             float zr = x < n - 1 ? occluderDepth(layer, ivec2(x + 1, y), level) : pz;
 #endif
-            if (zo < pz) {
+            vec4 w = zo < pz ? occluderWindow(layer, x, y, level, t) : vec4(0.0);
+            if (zo < pz && !ownSurface(plane, w, zo)) {
                 ++count;
-                vec4 w = occluderWindow(layer, x, y, level, t);
                 vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
                 vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
 #if GAP_FILL
@@ -250,11 +268,12 @@ bool farLayerInFront(ivec4 r, int level, float pz) {
 #endif
 
 // Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
-// plane HORIZON): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
+// plane HORIZON; PLANE as receiverAt()'s): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
 // far layer's micropatches (microrects with microrects) of the same texels, unless the map's
 // already hide the whole light or none of the far layer's lies in front (farLayerInFront());
 // returns visibility, COUNT = micro-occluders back-projected.
-float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int count) {
+float backproject(vec3 p, vec3 horizon, vec4 plane, float pz, vec4 area, int level,
+                  out int count) {
     count = 0;
     Coverage c = Coverage(uvec4(0u), uvec4(0u), 0.0);
 #if BITMASK
@@ -264,10 +283,11 @@ float backproject(vec3 p, vec3 horizon, float pz, vec4 area, int level, out int 
 #if MICROQUADS
     bool full = addQuads(p, pz, area, level, c.m0, c.m1, count);
 #else
-    bool full = backprojectLayer(0, p, pz, r, level, c, count);
+    bool full = backprojectLayer(0, p, plane, pz, r, level, c, count);
 #endif
 #if LAYERS == 2
-    if (!full && farLayerInFront(r, level, pz)) backprojectLayer(1, p, pz, r, level, c, count);
+    if (!full && farLayerInFront(r, level, pz))
+        backprojectLayer(1, p, plane, pz, r, level, c, count);
 #endif
 #if BITMASK
     return maskVisibility(c.m0, c.m1);

@@ -38,7 +38,8 @@ void main() {
     o_area = vec4(0.0);
     o_loq = vec4(-1.0, float(CLASS_LIT), float(budget), 0.0);
     vec3 p, horizon;
-    if (!receiverAt(pix, 0, p, horizon)) return;
+    vec4 plane;
+    if (!receiverAt(pix, 0, p, horizon, plane)) return;
     float pz = biasedDepth(p);
     float z = u_near;
     if (pz <= z) return;

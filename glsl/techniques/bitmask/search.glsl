@@ -3,6 +3,9 @@
 // area from the HSM, MSSM or YSM, and the budget's level. Coordinates: window (x/z, y/z at the
 // light's centre), texels of level 0 (window - lo) / texel. Needs ACCEL 0 HSM, 1 MSSM, 2 YSM.
 #include "techniques/bitmask/bindings.glsl"
+#ifndef MICROQUADS
+#define MICROQUADS 0
+#endif
 #define CLASS_LIT 0
 #define CLASS_PENUMBRA 1
 #define CLASS_UMBRA 2
@@ -43,10 +46,13 @@ uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - 
 // u along right) above the plane is horizon.x + horizon.y u + horizon.z v. Only an object
 // that casts hides the light below its plane (as its far side does for `exact`), a receiver or
 // not (role `occluder`: false, but HORIZON set, for its visibility); others get the plane 1
-// (all above).
-bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
+// (all above). PLANE: on a flat face of an object that casts, its tangent plane in the light's
+// frame (normal, offset: (x, y, z) lies on it where dot(normal, (x, y, z)) = offset), for
+// backproject.glsl's ownSurface() (not with microquads); else 0.
+bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon, out vec4 plane) {
     p = vec3(0.0);
     horizon = vec3(1.0, 0.0, 0.0);
+    plane = vec4(0.0);
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) return false;
     int id = texelFetch(u_id, pix, 0).r;
@@ -63,6 +69,10 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
         if (dot(g, n) > 0.9999) most = 2.0;  // a flat face (shading normal = the facet's)
         vec2 e = 2.0 * u_light_half * vec2(dot(g, u_light_right), dot(g, u_light_up));
         horizon = vec3(-dot(d, g) - 0.5 * (e.x + e.y), e);
+        if (most == 2.0 && MICROQUADS == 0) {
+            vec3 gl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
+            plane = vec4(gl, dot(g, d));
+        }
     }
     if (role.x < 0.5) return false;
     // The surface's depth step per lateral step, sin / cos^2 of the angle between its normal and
@@ -74,8 +84,18 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon) {
     // itself (2 everywhere: duck_resting's head on its body, receivers 0.062 -> 0.077).
     float c = clamp(-dot(n, normalize(d)), 0.05, 1.0);
     float slope = min(sqrt(1.0 - c * c) / (c * c), most);
-    float offset = u_normal_offset + (role.y > 0.5 ? float((1 << level) - 1) * slope : 0.0);
-    d += n * (offset * max(u_texel.x, u_texel.y) * z);
+    float extra = role.y > 0.5 ? float((1 << level) - 1) * slope : 0.0;
+    float texel = max(u_texel.x, u_texel.y) * z;
+    if (plane.xyz != vec3(0.0)) {
+        // A flat face takes the level's part along the ray to the light's centre only: its own
+        // micro-occluders are left out by ownSurface() instead. Along its normal, a face nearly
+        // edge-on to the light moved sideways by up to 2 (2^l - 1) texels, out of the shadow
+        // cast on it (random scene rand9307: a box's front face under a floating sphere, 0.09
+        // in exact, read 0.46).
+        d += n * (u_normal_offset * texel) - normalize(d) * (extra * c * texel);
+    } else {
+        d += n * ((u_normal_offset + extra) * texel);
+    }
     p = vec3(dot(d, u_light_right), dot(d, u_light_up), dot(d, u_light_forward));
     return p.z > 0.0;
 }

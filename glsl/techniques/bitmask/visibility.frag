@@ -35,8 +35,9 @@ layout(location = 4) out vec4 o_class;
 // Back-projection at LEVEL for the receiver at PIX offset by the level's texels.
 float visibilityAt(ivec2 pix, vec4 area, int level, out int count) {
     vec3 p, horizon;
-    receiverAt(pix, level, p, horizon);
-    return backproject(p, horizon, biasedDepth(p), area, level, count);
+    vec4 plane;
+    receiverAt(pix, level, p, horizon, plane);
+    return backproject(p, horizon, plane, biasedDepth(p), area, level, count);
 }
 
 void main() {
@@ -50,9 +51,10 @@ void main() {
     o_class = vec4(float(cls), 0.0, 0.0, 0.0);
     if (cls == CLASS_UMBRA) atomicAdd(s_umbra, 1u);
     vec3 p, horizon;
+    vec4 plane;
     if (cls == CLASS_UMBRA) return;
     // An `occluder` (casts, receives nothing; classified lit) sees the light above its plane.
-    if (!receiverAt(pix, 0, p, horizon) || cls == CLASS_LIT) {
+    if (!receiverAt(pix, 0, p, horizon, plane) || cls == CLASS_LIT) {
         o_visibility.x = litVisibility(horizon);
         return;
     }
