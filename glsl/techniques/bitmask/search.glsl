@@ -70,8 +70,8 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon, out vec4 pla
         vec2 e = 2.0 * u_light_half * vec2(dot(g, u_light_right), dot(g, u_light_up));
         horizon = vec3(-dot(d, g) - 0.5 * (e.x + e.y), e);
         if (most == 2.0 && MICROQUADS == 0) {
-            vec3 gl = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
-            plane = vec4(gl, dot(g, d));
+            vec3 gn = vec3(dot(g, u_light_right), dot(g, u_light_up), dot(g, u_light_forward));
+            plane = vec4(gn, dot(g, d));
         }
     }
     if (role.x < 0.5) return false;

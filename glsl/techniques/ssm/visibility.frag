@@ -162,9 +162,9 @@ bool receiverVisibility(vec3 pos, vec3 n, int id, out float v, out int layer, ou
         // Layers of the pixel's own object first: another object's layer at its depth can lie
         // in the pixel's object's own shadow (where a steep wall meets the floor, the floor's
         // layer matched the wall's foot and darkened it). A surface facing away from the
-        // light's centre is in no layer (they hold light-facing surfaces), so it matches only
-        // its own object's (its lit side next to it, whose occlusion by other casters it
-        // shares); matching none, it sees the light's part above its horizon. Only on objects
+        // light's centre is in no layer (they hold light-facing surfaces; an open sheet's, its
+        // side the light sees), so it matches only its own object's (its lit side next to it,
+        // whose occlusion by other casters it shares); matching none, it sees the light's part above its horizon. Only on objects
         // that cast: a receiver hides nothing, not even from itself (exact's rays pass through
         // it), so its pixels facing away match as light-facing ones (a wall between the light
         // and the camera took 0 where no layer of its own matched: mix34).
