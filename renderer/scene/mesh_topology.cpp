@@ -14,40 +14,49 @@ namespace {
 // other normals or uvs, often not to the bit (a sphere's seam at 2 pi, its poles).
 constexpr float kWeld = 1e-5f;
 
-// Positions welded through a grid of cells of the weld distance from the corner LO of their
-// bounds (at most 1 / kWeld cells a side): a point joins a welded one within that distance in
-// its own cell or one of the 26 around it, else starts a new one.
+// Positions welded through a grid of cells twice the weld distance D wide, from the corner LO
+// of their bounds (at most 1 / (2 kWeld) cells a side): a point joins a welded one within D,
+// which lies in its own cell or the next one on the nearer side along each axis (8 cells), else
+// starts a new one. Each cell's welded points are a list through next_.
 class Welder {
 public:
-    Welder(const glm::vec3& lo, float distance) : lo_(lo), cell_(distance) {}
+    Welder(const glm::vec3& lo, float distance, std::size_t points)
+        : lo_(lo), distance_(distance), cell_(2.0f * distance) {
+        welded_.reserve(points);
+        next_.reserve(points);
+        heads_.reserve(points);
+    }
 
     std::uint32_t weld(const glm::vec3& p) {
-        const glm::ivec3 c = cellOf(p);
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const auto it = cells_.find(key(c + glm::ivec3(dx, dy, dz)));
-                    if (it == cells_.end()) continue;
-                    for (std::uint32_t w : it->second)
-                        if (glm::all(
-                                glm::lessThanEqual(glm::abs(welded_[w] - p), glm::vec3(cell_))))
-                            return w;
-                }
+        const glm::vec3 t = (p - lo_) / cell_;
+        const glm::ivec3 c(glm::floor(t));
+        // Towards the nearer neighbour along each axis
+        const glm::ivec3 side(t.x - float(c.x) < 0.5f ? -1 : 1, t.y - float(c.y) < 0.5f ? -1 : 1,
+                              t.z - float(c.z) < 0.5f ? -1 : 1);
+        for (int i = 0; i < 8; ++i) {
+            const glm::ivec3 q = c + glm::ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1) * side;
+            const auto it = heads_.find(key(q));
+            for (std::uint32_t w = it == heads_.end() ? kNone : it->second; w != kNone;
+                 w = next_[w])
+                if (glm::all(glm::lessThanEqual(glm::abs(welded_[w] - p), glm::vec3(distance_))))
+                    return w;
+        }
         const auto w = static_cast<std::uint32_t>(welded_.size());
         welded_.push_back(p);
-        cells_[key(c)].push_back(w);
+        auto [head, fresh] = heads_.try_emplace(key(c), w);
+        next_.push_back(fresh ? kNone : head->second);
+        head->second = w;
         return w;
     }
 
 private:
+    static constexpr std::uint32_t kNone = ~0u;
     glm::vec3 lo_;
-    float cell_;
+    float distance_, cell_;
     std::vector<glm::vec3> welded_;
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+    std::vector<std::uint32_t> next_;  // the next welded point of the same cell
+    std::unordered_map<std::uint64_t, std::uint32_t> heads_;  // per cell, its last welded point
 
-    glm::ivec3 cellOf(const glm::vec3& p) const {
-        return glm::ivec3(glm::floor((p - lo_) / cell_));
-    }
     static std::uint64_t key(const glm::ivec3& c) {
         const auto part = [](int v) { return static_cast<std::uint64_t>(v) & 0x1fffffu; };
         return part(c.x) | (part(c.y) << 21) | (part(c.z) << 42);
@@ -63,10 +72,14 @@ bool isClosedSurface(const Model& model) {
     // No mesh, or no area anywhere at float precision.
     const float size = glm::length(hi - lo);
     if (!(kWeld * size > 0.0f && std::isfinite(size))) return false;
-    Welder welder(lo, kWeld * size);
+    std::size_t points = 0, indices = 0;
+    for (const Mesh& mesh : model.meshes)
+        points += mesh.positions.size(), indices += mesh.indices.size();
+    Welder welder(lo, kWeld * size, points);
     // Per undirected edge (smaller welded index first): walks from smaller to larger minus
     // walks the other way.
     std::unordered_map<std::uint64_t, long> balance;
+    balance.reserve(indices);
     for (const Mesh& mesh : model.meshes) {
         std::vector<std::uint32_t> weld(mesh.positions.size());
         for (std::size_t i = 0; i < mesh.positions.size(); ++i)
