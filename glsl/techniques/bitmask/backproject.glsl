@@ -268,10 +268,10 @@ bool farLayerInFront(ivec4 r, int level, float pz) {
 #endif
 
 // Back-projects the micro-occluders of LEVEL in AREA (level-0 texels) for receiver P (tangent
-// plane HORIZON; PLANE as receiverAt()'s): the map's (micropatches, microrects or microquads), then with LAYERS 2 the
-// far layer's micropatches (microrects with microrects) of the same texels, unless the map's
-// already hide the whole light or none of the far layer's lies in front (farLayerInFront());
-// returns visibility, COUNT = micro-occluders back-projected.
+// plane HORIZON; PLANE as receiverAt()'s): the map's (micropatches, microrects or microquads),
+// then with LAYERS 2 the far layer's micropatches (microrects with microrects) of the same
+// texels, unless the map's already hide the whole light or none of the far layer's lies in front
+// (farLayerInFront()); returns visibility, COUNT = micro-occluders back-projected.
 float backproject(vec3 p, vec3 horizon, vec4 plane, float pz, vec4 area, int level,
                   out int count) {
     count = 0;

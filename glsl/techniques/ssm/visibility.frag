@@ -164,10 +164,11 @@ bool receiverVisibility(vec3 pos, vec3 n, int id, out float v, out int layer, ou
         // layer matched the wall's foot and darkened it). A surface facing away from the
         // light's centre is in no layer (they hold light-facing surfaces; an open sheet's, its
         // side the light sees), so it matches only its own object's (its lit side next to it,
-        // whose occlusion by other casters it shares); matching none, it sees the light's part above its horizon. Only on objects
-        // that cast: a receiver hides nothing, not even from itself (exact's rays pass through
-        // it), so its pixels facing away match as light-facing ones (a wall between the light
-        // and the camera took 0 where no layer of its own matched: mix34).
+        // whose occlusion by other casters it shares); matching none, it sees the light's part
+        // above its horizon. Only on objects that cast: a receiver hides nothing, not even from
+        // itself (exact's rays pass through it), so its pixels facing away match as light-facing
+        // ones (a wall between the light and the camera took 0 where no layer of its own
+        // matched: mix34).
         vec3 to_light = u_light_centre - pos;
         bool casts = objectCasts(id);
         bool away = casts && dot(n, to_light) <= 0.0;
