@@ -70,6 +70,7 @@ struct GpuModel {
     Bounds bounds;  // model space
     size_t triangles = 0;
     bool closed = false;  // scene::isClosedSurface: no open sheet, back faces lie behind
+    bool convex = false;  // scene::isConvexSurface: it shadows itself only below a tangent plane
 };
 
 struct GpuObject {

@@ -1,4 +1,4 @@
-// Closed-surface test for models: see mesh_topology.h.
+// Closed- and convex-surface tests for models: see mesh_topology.h.
 #include "renderer/scene/mesh_topology.h"
 
 #include <algorithm>
@@ -97,6 +97,36 @@ bool isClosedSurface(const Model& model) {
     if (balance.empty()) return false;
     for (const auto& [edge, walks] : balance)
         if (walks != 0) return false;
+    return true;
+}
+
+bool isConvexSurface(const Model& model) {
+    if (!isClosedSurface(model)) return false;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    double triangles = 0, points = 0;
+    for (const Mesh& mesh : model.meshes) {
+        for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        triangles += double(mesh.indices.size() / 3), points += double(mesh.positions.size());
+    }
+    if (triangles * points > kConvexTestBudget) return false;
+    const float tolerance = 1e-4f * glm::length(hi - lo);
+    for (const Mesh& mesh : model.meshes)
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const glm::vec3 a = mesh.positions[mesh.indices[t]];
+            const glm::vec3 n = glm::cross(mesh.positions[mesh.indices[t + 1]] - a,
+                                           mesh.positions[mesh.indices[t + 2]] - a);
+            const float length = glm::length(n);
+            if (!(length > 0.0f)) continue;  // no area
+            // Every vertex on one side of the plane (either: the winding may face inwards).
+            bool above = false, below = false;
+            for (const Mesh& other : model.meshes)
+                for (const glm::vec3& p : other.positions) {
+                    const float h = glm::dot(n, p - a) / length;
+                    above = above || h > tolerance;
+                    below = below || h < -tolerance;
+                    if (above && below) return false;
+                }
+        }
     return true;
 }
 
