@@ -12,4 +12,11 @@ vec3 geometricNormal(ivec2 pix) {
     return normalize(texelFetch(u_geometric_normal, pix, 0).xyz);
 }
 
+// Whether the pixel's triangle is seen from its back (its normals turned to face the viewer): a
+// plane from below, or a closed object's far side where depth precision lets it win at a
+// silhouette, whose turned normal points into the object.
+bool seenFromBehind(ivec2 pix) {
+    return texelFetch(u_geometric_normal, pix, 0).w > 0.5;
+}
+
 #endif  // PENUMBRA_GEOMETRIC_NORMAL_GLSL

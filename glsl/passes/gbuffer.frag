@@ -1,6 +1,7 @@
 #version 450 core
 // G-buffer targets: position (w = 1 on geometry), normal + view depth, linear albedo, object id,
-// and the geometric normal: the plane of the drawn triangle, facing the side seen.
+// and the geometric normal: the plane of the drawn triangle, facing the side seen (w: 1 where
+// that is the triangle's back).
 #include "common/bindings.glsl"
 in vec3 v_world;
 in vec3 v_normal;
@@ -42,5 +43,5 @@ void main() {
     vec3 g = cross(dFdx(v_world), dFdy(v_world));
     float len = length(g);
     g = len > 0.0 ? g / len : n;
-    o_geometric_normal = vec4(dot(g, n) < 0.0 ? -g : g, 0.0);
+    o_geometric_normal = vec4(dot(g, n) < 0.0 ? -g : g, gl_FrontFacing ? 0.0 : 1.0);
 }

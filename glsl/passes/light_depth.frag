@@ -2,8 +2,10 @@
 // Stores light_depth.vert's depth: in the depth buffer (linear, so receivers compare depths
 // linearly; nearest or farthest surface by the host's depth test), with IDS also the object id
 // in colour 0; with DISTANCE, the distance as (min, max) in colour 0 (the level 0 of a min/max
-// pyramid) under the rasteriser's own depth; with RANGE, the depth in colours 0 and 1, which
-// MIN and MAX blending keep as the nearest and the farthest surface in one draw (no depth test).
+// pyramid) under the rasteriser's own depth, and with IDS too (object id, 1e30) in colour 1 (the
+// texel's owner: passes::DistancePyramid::owners()); with
+// RANGE, the depth in colours 0 and 1, which MIN and MAX blending keep as the nearest and the
+// farthest surface in one draw (no depth test).
 #ifndef IDS
 #define IDS 0
 #endif
@@ -23,7 +25,16 @@ void main() {
 }
 #elif DISTANCE
 layout(location = 0) out vec2 o_range;
-void main() { o_range = vec2(v_depth); }
+#if IDS
+uniform int u_object_id;
+layout(location = 1) out vec2 o_owner;
+#endif
+void main() {
+    o_range = vec2(v_depth);
+#if IDS
+    o_owner = vec2(float(u_object_id), 1e30);
+#endif
+}
 #else
 #if IDS
 uniform int u_object_id;

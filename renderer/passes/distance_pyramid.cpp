@@ -7,7 +7,8 @@
 
 namespace penumbra::passes {
 
-DistancePyramid::DistancePyramid(int size, const char* label, const gl::Texture* shared_depth)
+DistancePyramid::DistancePyramid(int size, const char* label, const gl::Texture* shared_depth,
+                                 bool with_owners)
     : size_(size), levels_(std::bit_width(static_cast<unsigned>(size))) {
     texture_ = gl::createTexture2D(GL_RG32F, size_, size_, label, levels_);
     if (!shared_depth) {
@@ -17,6 +18,12 @@ DistancePyramid::DistancePyramid(int size, const char* label, const gl::Texture*
     fbo_ = gl::createFramebuffer(label);
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0);
     glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, shared_depth->id(), 0);
+    if (with_owners) {
+        owners_ = gl::createTexture2D(GL_RG32F, size_, size_, label, levels_);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, owners_.id(), 0);
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
+    }
     checkFramebuffer(fbo_, label);
     program_ = gl::buildProgram("distance pyramid", {"passes/distance_pyramid.comp"});
 }
@@ -25,6 +32,10 @@ void DistancePyramid::beginDraw() const {
     beginDepthMapDraw(fbo_.id(), size_);
     const float empty[4] = {kEmpty, kEmpty, 0.0f, 0.0f}, far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty);
+    if (owners_.id() != 0) {
+        const float none[4] = {-1.0f, kEmpty, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, none);
+    }
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
 }
 

@@ -18,8 +18,11 @@ public:
 
     // SIZE (a power of two) texels per side, RG32F mips: (min, max) distance. SHARED_DEPTH: the
     // depth buffer its draws test against, that of another pyramid of the same size (each draw
-    // clears it); without one it has its own.
-    DistancePyramid(int size, const char* label, const gl::Texture* shared_depth = nullptr);
+    // clears it); without one it has its own. WITH_OWNERS: level 0 has each texel's owner too
+    // (owners(), colour 1: (object id, kEmpty), (-1, kEmpty) where no caster is), written by a
+    // draw with Output::DistanceAndIds.
+    DistancePyramid(int size, const char* label, const gl::Texture* shared_depth = nullptr,
+                    bool with_owners = false);
 
     // Binds level 0 as the target with distances cleared to kEmpty and depth to the far
     // plane, in the state of every light depth map; a LightDepthPass draw writing (d, d)
@@ -36,10 +39,13 @@ public:
     int levels() const { return levels_; }
     const gl::Texture& texture() const { return texture_; }
     const gl::Texture& depth() const { return depth_; }  // its own (empty with a shared one)
+    // RG32F with the pyramid's levels (WITH_OWNERS; else empty): the draw writes level 0,
+    // build() none (the levels above are bitmask::MicroRects')
+    const gl::Texture& owners() const { return owners_; }
 
 private:
     int size_, levels_;
-    gl::Texture texture_, depth_;
+    gl::Texture texture_, depth_, owners_;
     gl::Framebuffer fbo_;
     gl::Program program_;
 };

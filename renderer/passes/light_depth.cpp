@@ -36,21 +36,23 @@ gl::Program buildSampleDepthProgram(const char* label, bool vertex_layer) {
 
 LightDepthPass::LightDepthPass(const char* label, Output output)
     : output_(output),
-      program_(gl::buildProgram(label, {"passes/light_depth.vert", "passes/light_depth.frag"},
-                                {{"IDS", output == Output::DepthAndIds ? "1" : "0"},
-                                 {"DISTANCE", output == Output::Distance ? "1" : "0"},
-                                 {"RANGE", output == Output::Range ? "1" : "0"}})) {}
+      program_(gl::buildProgram(
+          label, {"passes/light_depth.vert", "passes/light_depth.frag"},
+          {{"IDS", output == Output::DepthAndIds || output == Output::DistanceAndIds ? "1" : "0"},
+           {"DISTANCE", output == Output::Distance || output == Output::DistanceAndIds ? "1" : "0"},
+           {"RANGE", output == Output::Range ? "1" : "0"}})) {}
 
-LightDepthPass::LightDepthPass(const char* label, const char* fragment)
+LightDepthPass::LightDepthPass(const char* label, const char* fragment, bool with_ids)
     : output_(Output::Depth),
-      program_(gl::buildProgram(label, {"passes/light_depth.vert", fragment}, {{"PEEL", "1"}})) {}
+      program_(gl::buildProgram(label, {"passes/light_depth.vert", fragment},
+                                {{"PEEL", "1"}, {"IDS", with_ids ? "1" : "0"}})) {}
 
 void LightDepthPass::draw(const GpuScene& scene, GpuScene::Filter filter,
                           const scene::RectLight& light, const LightDepthView& view) const {
     glUseProgram(program_.id());
     gl::setUniform(program_, "u_view_proj", view.view_proj);
     setLightFrameUniforms(program_, light);
-    if (output_ != Output::Distance) {
+    if (output_ != Output::Distance && output_ != Output::DistanceAndIds) {
         gl::setUniform(program_, "u_near", view.near);
         gl::setUniform(program_, "u_inv_range", view.inv_range);
     }

@@ -38,15 +38,16 @@ struct LightDepthView {
 class LightDepthPass {
 public:
     enum class Output {
-        Depth,        // linear depth in the depth buffer
-        DepthAndIds,  // and each surface's object id in colour 0 (R32I)
-        Distance,     // the distance itself as (min, max) in colour 0 (RG32F), no depth range
-        Range,        // linear depth in colours 0 and 1, for LightDepthRangeTarget
+        Depth,           // linear depth in the depth buffer
+        DepthAndIds,     // and each surface's object id in colour 0 (R32I)
+        Distance,        // the distance itself as (min, max) in colour 0 (RG32F), no depth range
+        DistanceAndIds,  // and (object id, 1e30) in colour 1 (RG32F, DistancePyramid's owners)
+        Range,           // linear depth in colours 0 and 1, for LightDepthRangeTarget
     };
     LightDepthPass(const char* label, Output output);
     // Depth with the world position and normal passed on to FRAGMENT, a technique's own
-    // fragment shader (receiver peeling).
-    LightDepthPass(const char* label, const char* fragment);
+    // fragment shader (receiver peeling); IDS defined 1 in it with WITH_IDS, else 0.
+    LightDepthPass(const char* label, const char* fragment, bool with_ids = false);
 
     // Draws the objects FILTER selects through VIEW into the bound target (its state set by
     // the caller, e.g. beginDepthMapDraw); leaves the program in use.

@@ -17,6 +17,18 @@
 // microrects)
 layout(binding = BITMASK_UNIT_VISIBILITY_FAR) uniform sampler2D u_far;
 #endif
+#ifndef OWN_IDS
+#define OWN_IDS 0
+#endif
+#if OWN_IDS && !GAP_FILL
+// Per layer, the owner of each micropatch (level 0) and microrect (levels 1..): the object id
+// of its nearest texel (-1: none) and the nearest distance of the texels it merged of other
+// objects (microrects.comp). With gap filling, its neighbour depths carry them packed.
+layout(binding = BITMASK_UNIT_VISIBILITY_OWNERS) uniform sampler2D u_owners;
+#if LAYERS == 2
+layout(binding = BITMASK_UNIT_VISIBILITY_FAR_OWNERS) uniform sampler2D u_far_owners;
+#endif
+#endif
 #if MICRORECTS
 // Level-0 texels x0, y0, x1, y1
 layout(binding = BITMASK_UNIT_VISIBILITY_RECT_EXTENT) uniform sampler2D u_rect_extent;
@@ -59,12 +71,13 @@ bool joins(float zo, float zn, float pz) {
 }
 
 // The distance of the micro-occluder at (X, Y) of LAYER's LEVEL with those of (X, Y - 1) and
-// (X, Y + 1), farther than any receiver where the map ends: (distance, below, above).
-vec3 occluderColumn(int layer, ivec2 xy, int level) {
+// (X, Y + 1), farther than any receiver where the map ends, and its packed owner (OWN_IDS;
+// neighbours.comp): (distance, below, above, owner).
+vec4 occluderColumn(int layer, ivec2 xy, int level) {
 #if LAYERS == 2
-    if (layer == 1) return texelFetch(u_far_neighbours, xy, level).xyz;
+    if (layer == 1) return texelFetch(u_far_neighbours, xy, level);
 #endif
-    return texelFetch(u_neighbours, xy, level).xyz;
+    return texelFetch(u_neighbours, xy, level);
 }
 #endif
 
@@ -185,32 +198,72 @@ bool ownSurface(vec4 plane, vec4 w, float zo) {
     return lowest <= dot(n, u_texel) * zo && highest <= dot(n, w.zw - w.xy) * zo;
 }
 
+// Whether micro-occluder (X, Y) of LEVEL of LAYER is the receiver's convex object OWN
+// (receiverAt()) and what else it merged lies behind the receiver's biased depth PZ. A convex
+// object hides from a point of its surface only the light below the tangent plane there (the
+// horizon's samples, set already), so such micro-occluders are left out whatever their level:
+// a coarse one takes the object's nearest depth over a block, which lies far in front of most
+// of the surface it covers (a box's top edge over its face). One whose block holds another
+// caster in front of the receiver is kept. OWNER: with gap filling, its owner as its neighbour
+// depths pack it (occluderColumn()), which spares a fetch in the loop: on a software rasteriser
+// every pixel pays a branch's fetch.
+bool ownObject(int layer, int x, int y, int level, int own, float pz, float owner) {
+#if OWN_IDS
+    if (own < 0) return false;
+#if GAP_FILL
+    uint b = floatBitsToUint(owner);
+    return int(b & 0xFFu) == own + 1 && uintBitsToFloat(b & ~0xFFu) >= pz;
+#else
+#if !MICRORECTS
+    if (level > 0) return false;  // coarse micropatches carry no owners
+#endif
+#if LAYERS == 2
+    vec2 o = layer == 1 ? texelFetch(u_far_owners, ivec2(x, y), level).rg
+                        : texelFetch(u_owners, ivec2(x, y), level).rg;
+#else
+    vec2 o = texelFetch(u_owners, ivec2(x, y), level).rg;
+#endif
+    return int(o.x) == own && o.y >= pz;
+#endif
+#else
+    return false;
+#endif
+}
+
 // Back-projects the micro-occluders of LEVEL of LAYER in the texel range R (levelRange()) for
-// receiver P (biased depth PZ) into C, but those ownSurface() finds of P's tangent plane PLANE;
+// receiver P (biased depth PZ) into C, but those ownSurface() finds of P's tangent plane PLANE
+// and those ownObject() finds of its convex object OWN;
 // COUNT += those back-projected. A row's depths slide along it (each texel read once; GAP_FILL
 // reads its left and right neighbours from there), and with a bitmask the rows stop once every
 // light sample is occluded; returns whether they did.
-bool backprojectLayer(int layer, vec3 p, vec4 plane, float pz, ivec4 r, int level,
+bool backprojectLayer(int layer, vec3 p, vec4 plane, int own, float pz, ivec4 r, int level,
                       inout Coverage c, inout int count) {
     int n = u_map_size >> level;
     vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
     for (int y = r.y; y <= r.w; ++y) {
         float zl = r.x > 0 ? occluderDepth(layer, ivec2(r.x - 1, y), level) : pz;
 #if GAP_FILL
-        vec3 co = occluderColumn(layer, ivec2(r.x, y), level);
+        vec4 co = occluderColumn(layer, ivec2(r.x, y), level);
         float zo = co.x;
 #else
         float zo = occluderDepth(layer, ivec2(r.x, y), level);
 #endif
         for (int x = r.x; x <= r.z; ++x) {
 #if GAP_FILL
-            vec3 cr = x < n - 1 ? occluderColumn(layer, ivec2(x + 1, y), level) : vec3(pz);
+            vec4 cr =
+                x < n - 1 ? occluderColumn(layer, ivec2(x + 1, y), level) : vec4(vec3(pz), 0.0);
             float zr = cr.x;
 #else
             float zr = x < n - 1 ? occluderDepth(layer, ivec2(x + 1, y), level) : pz;
 #endif
             vec4 w = zo < pz ? occluderWindow(layer, x, y, level, t) : vec4(0.0);
-            if (zo < pz && !ownSurface(plane, w, zo)) {
+#if GAP_FILL
+            float owner = co.w;
+#else
+            float owner = 0.0;
+#endif
+            if (zo < pz && !ownSurface(plane, w, zo) &&
+                !ownObject(layer, x, y, level, own, pz, owner)) {
                 ++count;
                 vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
                 vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
@@ -272,7 +325,7 @@ bool farLayerInFront(ivec4 r, int level, float pz) {
 // then with LAYERS 2 the far layer's micropatches (microrects with microrects) of the same
 // texels, unless the map's already hide the whole light or none of the far layer's lies in front
 // (farLayerInFront()); returns visibility, COUNT = micro-occluders back-projected.
-float backproject(vec3 p, vec3 horizon, vec4 plane, float pz, vec4 area, int level,
+float backproject(vec3 p, vec3 horizon, vec4 plane, int own, float pz, vec4 area, int level,
                   out int count) {
     count = 0;
     Coverage c = Coverage(uvec4(0u), uvec4(0u), 0.0);
@@ -283,11 +336,11 @@ float backproject(vec3 p, vec3 horizon, vec4 plane, float pz, vec4 area, int lev
 #if MICROQUADS
     bool full = addQuads(p, pz, area, level, c.m0, c.m1, count);
 #else
-    bool full = backprojectLayer(0, p, plane, pz, r, level, c, count);
+    bool full = backprojectLayer(0, p, plane, own, pz, r, level, c, count);
 #endif
 #if LAYERS == 2
     if (!full && farLayerInFront(r, level, pz))
-        backprojectLayer(1, p, plane, pz, r, level, c, count);
+        backprojectLayer(1, p, plane, own, pz, r, level, c, count);
 #endif
 #if BITMASK
     return maskVisibility(c.m0, c.m1);

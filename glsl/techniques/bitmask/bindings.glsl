@@ -25,6 +25,8 @@
 #define BITMASK_UNIT_VISIBILITY_FAR_RECT_DEPTH 16  // 15 is UNIT_GEOMETRIC_NORMAL
 #define BITMASK_UNIT_VISIBILITY_NEIGHBOURS 17      // gap_fill: neighbours.comp's levels
 #define BITMASK_UNIT_VISIBILITY_FAR_NEIGHBOURS 18  // and the far layer's
+#define BITMASK_UNIT_VISIBILITY_OWNERS 19      // OWN_IDS: the map's owners (microrects.comp)
+#define BITMASK_UNIT_VISIBILITY_FAR_OWNERS 20  // and the far layer's
 #define BITMASK_BINDING_VISIBILITY_STATS 3  // SSBO of the statistics counters
 #define BITMASK_BINDING_VISIBILITY_MASKS 4  // SSBO of the half-plane masks
 // loq_smooth.frag
@@ -42,8 +44,11 @@
 #define BITMASK_IMAGE_MICRORECTS_DEPTH_IN 2
 #define BITMASK_IMAGE_MICRORECTS_EXTENT_OUT 3
 #define BITMASK_IMAGE_MICRORECTS_DEPTH_OUT 4
+#define BITMASK_IMAGE_MICRORECTS_OWNERS_IN 5   // OWN_IDS: the level below's owners
+#define BITMASK_IMAGE_MICRORECTS_OWNERS_OUT 6  // and the level's
 // neighbours.comp
 #define BITMASK_UNIT_NEIGHBOURS_SOURCE 0
+#define BITMASK_UNIT_NEIGHBOURS_OWNERS 1  // OWN_IDS
 #define BITMASK_IMAGE_NEIGHBOURS_OUT 0
 
 #endif

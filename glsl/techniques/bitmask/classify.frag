@@ -39,7 +39,8 @@ void main() {
     o_loq = vec4(-1.0, float(CLASS_LIT), float(budget), 0.0);
     vec3 p, horizon;
     vec4 plane;
-    if (!receiverAt(pix, 0, p, horizon, plane)) return;
+    int own;
+    if (!receiverAt(pix, 0, p, horizon, plane, own)) return;
     float pz = biasedDepth(p);
     float z = u_near;
     if (pz <= z) return;

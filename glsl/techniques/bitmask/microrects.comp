@@ -8,8 +8,14 @@
 // bounding rectangle of the merged extents (level-0 texels, inclusive; x0 > x1 = no caster);
 // depth: their minimum. Level 1 (u_from_hsm = 1) merges the HSM's level-0 texels, the level-0
 // micropatches, which are not stored. The 14 depths the merge reads are loaded once, and a
-// texel without caster (depth u_empty) has no extent to load.
+// texel without caster (depth u_empty) has no extent to load. OWN_IDS 1: each microrect's
+// object id too, that of its nearest texel (-1: none), and the nearest distance of the texels
+// it merged of other objects (u_empty: none), so a receiver of that object can tell what else
+// lies under it.
 #include "techniques/bitmask/bindings.glsl"
+#ifndef OWN_IDS
+#define OWN_IDS 0
+#endif
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_HSM0) uniform readonly image2D u_hsm0;
 layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_IN) uniform readonly image2D u_extent_in;
@@ -17,6 +23,12 @@ layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_IN) uniform readonly image
 layout(rgba32f,
        binding = BITMASK_IMAGE_MICRORECTS_EXTENT_OUT) uniform writeonly image2D u_extent_out;
 layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_OUT) uniform writeonly image2D u_depth_out;
+#if OWN_IDS
+// (object id, the nearest distance of other objects' texels merged)
+layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_OWNERS_IN) uniform readonly image2D u_owners_in;
+layout(rg32f,
+       binding = BITMASK_IMAGE_MICRORECTS_OWNERS_OUT) uniform writeonly image2D u_owners_out;
+#endif
 uniform int u_from_hsm;
 uniform float u_empty;  // the distance of texels without casters
 
@@ -24,6 +36,10 @@ const vec4 kNone = vec4(1e9, 1e9, -1e9, -1e9);
 ivec2 g_size;       // level k's size
 ivec2 g_a;          // the reference point A in level k
 float g_depth[25];  // level k's depths at A + (-2..2, -2..2), row-major; u_empty outside
+#if OWN_IDS
+int g_id[25];       // and their object ids (-1 outside)
+float g_other[25];  // and their other objects' nearest distances
+#endif
 
 int slot(ivec2 o) {
     return (o.y + 2) * 5 + o.x + 2;
@@ -37,6 +53,11 @@ void load(ivec2 o) {
     float z = u_empty;
     if (inside(o)) z = u_from_hsm == 1 ? imageLoad(u_hsm0, q).r : imageLoad(u_depth_in, q).r;
     g_depth[slot(o)] = z;
+#if OWN_IDS
+    vec2 owner = z < u_empty ? imageLoad(u_owners_in, q).rg : vec2(-1.0, u_empty);
+    g_id[slot(o)] = int(owner.x);
+    g_other[slot(o)] = owner.y;
+#endif
 }
 float depthAt(ivec2 o) {
     return g_depth[slot(o)];
@@ -64,18 +85,45 @@ bool mergesDown(ivec2 q, ivec2 lo, ivec2 hi) {
     return gap(z, depthAt(lo)) <= gap(z, depthAt(hi));
 }
 
+int idAt(ivec2 o) {
+#if OWN_IDS
+    return g_id[slot(o)];
+#else
+    return -1;
+#endif
+}
+float otherAt(ivec2 o) {
+#if OWN_IDS
+    return g_other[slot(o)];
+#else
+    return u_empty;
+#endif
+}
+
 struct Merged {
     vec4 extent;
     float depth;
+    int id;       // the nearest texel's object
+    float other;  // the nearest distance of the texels of other objects
 };
 void take(inout Merged m, ivec2 q) {
     if (!inside(q)) return;
     m.extent = unite(m.extent, extentAt(q));
-    m.depth = min(m.depth, depthAt(q));
+    // The nearer of the two gives the id; the farther adds its texels of other objects: all of
+    // them where its own id differs (its nearest among them), else those of its own others.
+    float zq = depthAt(q), oq = otherAt(q);
+    int iq = idAt(q);
+    if (zq < m.depth) {
+        m.other = min(oq, iq == m.id ? m.other : m.depth);
+        m.id = iq;
+        m.depth = zq;
+    } else {
+        m.other = min(m.other, iq == m.id ? oq : zq);
+    }
 }
 // Pass 1 of the microrect with reference point A + O: A, B and D by depth, E by containment.
 Merged firstPass(ivec2 o) {
-    Merged m = Merged(extentAt(o), depthAt(o));
+    Merged m = Merged(extentAt(o), depthAt(o), idAt(o), otherAt(o));
     if (mergesDown(o + ivec2(1, 0), o, o + ivec2(2, 0))) take(m, o + ivec2(1, 0));
     if (mergesDown(o + ivec2(0, 1), o, o + ivec2(0, 2))) take(m, o + ivec2(0, 1));
     if (inside(o + 1) && contains(m.extent, extentAt(o + 1))) take(m, o + 1);
@@ -105,6 +153,9 @@ void main() {
     if (!loadDepths()) {
         imageStore(u_extent_out, p, kNone);
         imageStore(u_depth_out, p, vec4(u_empty));
+#if OWN_IDS
+        imageStore(u_owners_out, p, vec4(-1.0, u_empty, 0.0, 0.0));
+#endif
         return;
     }
     Merged m = firstPass(ivec2(0));
@@ -117,4 +168,7 @@ void main() {
     }
     imageStore(u_extent_out, p, m.extent);
     imageStore(u_depth_out, p, vec4(m.depth));
+#if OWN_IDS
+    imageStore(u_owners_out, p, vec4(float(m.id), m.other, 0.0, 0.0));
+#endif
 }

@@ -1,9 +1,20 @@
 #version 450 core
 // `bitmask` gap filling's reads in one: per texel of a level, the micro-occluder's distance with
 // those of its neighbours below and above (y - 1, y + 1; kNone past the map's edge, where no
-// neighbour joins), so that backproject.glsl fetches one texel where it fetched three.
+// neighbour joins), so that backproject.glsl fetches one texel where it fetched three. OWN_IDS 1:
+// and its owner (microrects.comp) packed in .w for backproject.glsl's ownObject(), which then
+// costs no fetch of its own: the nearest distance of other objects' texels with its low 8 bits
+// replaced by the object id + 1 (0: none or unknown), that distance rounded towards 0.
 #include "techniques/bitmask/bindings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
+#ifndef OWN_IDS
+#define OWN_IDS 0
+#endif
+#if OWN_IDS
+// The owners' level (passes::DistancePyramid::owners()); unknown where u_owned is 0
+layout(binding = BITMASK_UNIT_NEIGHBOURS_OWNERS) uniform sampler2D u_owners;
+uniform int u_owned;
+#endif
 
 // The level's distances in .r: the (min, max) pyramid, or the microrects' depths (levels 1 and up)
 layout(binding = BITMASK_UNIT_NEIGHBOURS_SOURCE) uniform sampler2D u_source;
@@ -20,5 +31,13 @@ void main() {
     float z = texelFetch(u_source, xy, u_level).r;
     float below = xy.y > 0 ? texelFetch(u_source, xy - ivec2(0, 1), u_level).r : kNone;
     float above = xy.y < u_size - 1 ? texelFetch(u_source, xy + ivec2(0, 1), u_level).r : kNone;
-    imageStore(o_neighbours, xy, vec4(z, below, above, 0.0));
+    float owner = 0.0;
+#if OWN_IDS
+    if (u_owned == 1) {
+        vec2 o = texelFetch(u_owners, xy, u_level).rg;
+        uint id = o.x >= 0.0 ? uint(o.x) + 1u : 0u;  // the host keeps ids below 255
+        owner = uintBitsToFloat((floatBitsToUint(o.y) & ~0xFFu) | id);
+    }
+#endif
+    imageStore(o_neighbours, xy, vec4(z, below, above, owner));
 }

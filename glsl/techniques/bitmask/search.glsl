@@ -16,7 +16,7 @@
 layout(binding = BITMASK_UNIT_SEARCH_POSITION) uniform sampler2D u_position;
 layout(binding = BITMASK_UNIT_SEARCH_NORMAL) uniform sampler2D u_normal;
 layout(binding = BITMASK_UNIT_SEARCH_ID) uniform isampler2D u_id;
-// Per object id: (receives, casts), 0 or 1
+// Per object id: (receives, casts, convex and both), 0 or 1
 layout(binding = BITMASK_UNIT_SEARCH_RECEIVES) uniform sampler2D u_receives;
 // (min, max) distance, mip pyramid
 layout(binding = BITMASK_UNIT_SEARCH_HSM) uniform sampler2D u_hsm;
@@ -48,15 +48,18 @@ uniform float u_depth_bias;    // a micro-occluder counts when nearer than (1 - 
 // not (role `occluder`: false, but HORIZON set, for its visibility); others get the plane 1
 // (all above). PLANE: on a flat face of an object that casts, its tangent plane in the light's
 // frame (normal, offset: (x, y, z) lies on it where dot(normal, (x, y, z)) = offset), for
-// backproject.glsl's ownSurface() (not with microquads); else 0.
-bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon, out vec4 plane) {
+// backproject.glsl's ownSurface() (not with microquads); else 0. OWN: the receiver's object id
+// where that object casts and is convex (it cannot shadow itself beyond its tangent plane, the
+// horizon's share), for backproject.glsl's ownObject(); else -1.
+bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon, out vec4 plane, out int own) {
     p = vec3(0.0);
     horizon = vec3(1.0, 0.0, 0.0);
     plane = vec4(0.0);
+    own = -1;
     vec4 pos = texelFetch(u_position, pix, 0);
     if (pos.w == 0.0) return false;
     int id = texelFetch(u_id, pix, 0).r;
-    vec2 role = id < 0 ? vec2(0.0) : texelFetch(u_receives, ivec2(id, 0), 0).rg;
+    vec3 role = id < 0 ? vec3(0.0) : texelFetch(u_receives, ivec2(id, 0), 0).rgb;
     if (role.x < 0.5 && role.y < 0.5) return false;
     vec3 n = normalize(texelFetch(u_normal, pix, 0).xyz);
     vec3 d = pos.xyz - u_light_centre;
@@ -75,6 +78,8 @@ bool receiverAt(ivec2 pix, int level, out vec3 p, out vec3 horizon, out vec4 pla
         }
     }
     if (role.x < 0.5) return false;
+    // (Not on a closed object's far side seen at a silhouette: its normal faces inwards there.)
+    if (role.z > 0.5 && !seenFromBehind(pix)) own = id;
     // The surface's depth step per lateral step, sin / cos^2 of the angle between its normal and
     // the direction to the light's centre, is what the offset along the normal must make up, up
     // to 1 (45 degrees) on a smooth surface and 2 (62 degrees) on a flat face. A flat face

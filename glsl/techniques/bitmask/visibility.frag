@@ -36,8 +36,9 @@ layout(location = 4) out vec4 o_class;
 float visibilityAt(ivec2 pix, vec4 area, int level, out int count) {
     vec3 p, horizon;
     vec4 plane;
-    receiverAt(pix, level, p, horizon, plane);
-    return backproject(p, horizon, plane, biasedDepth(p), area, level, count);
+    int own;
+    receiverAt(pix, level, p, horizon, plane, own);
+    return backproject(p, horizon, plane, own, biasedDepth(p), area, level, count);
 }
 
 void main() {
@@ -52,9 +53,10 @@ void main() {
     if (cls == CLASS_UMBRA) atomicAdd(s_umbra, 1u);
     vec3 p, horizon;
     vec4 plane;
+    int own;
     if (cls == CLASS_UMBRA) return;
     // An `occluder` (casts, receives nothing; classified lit) sees the light above its plane.
-    if (!receiverAt(pix, 0, p, horizon, plane) || cls == CLASS_LIT) {
+    if (!receiverAt(pix, 0, p, horizon, plane, own) || cls == CLASS_LIT) {
         o_visibility.x = litVisibility(horizon);
         return;
     }

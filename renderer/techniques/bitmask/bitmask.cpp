@@ -69,37 +69,47 @@ void Bitmask::readInputs(const scene::Scene& scene) {
 }
 
 void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
-    // Per object id: (receives, casts), 255 for yes.
+    // Per object id: (receives, casts, convex, 0), 255 for yes.
     std::vector<std::uint8_t> roles;
+    own_ids_ = false;
     for (const auto& o : scene.objects()) {
-        const auto i = 2 * static_cast<size_t>(o.id);
-        roles.resize(std::max(roles.size(), i + 2), 0);
-        roles[i] = scene::receivesShadow(o.shadow) ? 255 : 0;
-        roles[i + 1] = scene::castsShadow(o.shadow) ? 255 : 0;
+        const auto i = 4 * static_cast<size_t>(o.id);
+        roles.resize(std::max(roles.size(), i + 4), 0);
+        const bool receives = scene::receivesShadow(o.shadow), casts = scene::castsShadow(o.shadow);
+        const bool convex = receives && casts && o.model->convex;
+        roles[i] = receives ? 255 : 0;
+        roles[i + 1] = casts ? 255 : 0;
+        roles[i + 2] = convex ? 255 : 0;
+        own_ids_ = own_ids_ || convex;
     }
-    if (roles.empty()) roles = {0, 0};
-    const int ids = static_cast<int>(roles.size() / 2);
-    receives_ = gl::createTexture2D(GL_RG8, ids, 1, "bitmask object roles");
-    glTextureSubImage2D(receives_.id(), 0, 0, 0, ids, 1, GL_RG, GL_UNSIGNED_BYTE, roles.data());
-    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_, far_layer_);
+    // Microquads read the map their own way: no ids there. Gap filling's neighbour depths pack
+    // an id in 8 bits (neighbours.comp): ids below 255.
+    own_ids_ = own_ids_ && !microquads_ && scene.objects().size() < 255;
+    if (roles.empty()) roles = {0, 0, 0, 0};
+    const int ids = static_cast<int>(roles.size() / 4);
+    receives_ = gl::createTexture2D(GL_RGBA8, ids, 1, "bitmask object roles");
+    glTextureSubImage2D(receives_.id(), 0, 0, 0, ids, 1, GL_RGBA, GL_UNSIGNED_BYTE, roles.data());
+    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_, far_layer_, own_ids_);
     if (use_bitmask_) {
         const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
         masks_ = bitmask::halfPlaneBuffer(points);
         samples_ = bitmask::pointTexture(points);
         if (microquads_) edges_ = bitmask::edgeTexture(points);
     }
-    if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
-    if (microrects_ && far_layer_) far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_);
+    if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_);
+    if (microrects_ && far_layer_)
+        far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_);
     if (gap_fill_ && !microquads_)
-        neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_);
+        neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_, own_ids_);
     if (gap_fill_ && far_layer_)
-        far_neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_);
+        far_neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_, own_ids_);
     if (budget_map_) budget_texture_ = bitmask::uploadBudgetMap(*budget_map_);
     // ACCEL and GAP_FILL from the table; the rest follow from several parameters.
     gl::Defines defines = gl::paramDefines(kBitmaskParams, params_);
     defines.insert(defines.end(), {{"BITMASK", use_bitmask_ ? "1" : "0"},
                                    {"MICRORECTS", microrects_ ? "1" : "0"},
                                    {"MICROQUADS", microquads_ ? "1" : "0"},
+                                   {"OWN_IDS", own_ids_ ? "1" : "0"},
                                    {"BLEND", smooth_ ? "1" : "0"}});
     classify_ =
         gl::buildProgram("bitmask classify",
@@ -134,17 +144,24 @@ void Bitmask::render(frame::FrameContext& ctx) {
         if (accel_ != Accel::Hsm)
             ctx.pass(accel_ == Accel::Ysm ? "bitmask_ysm" : "bitmask_mssm",
                      [&] { ranges_->buildMssm(); });
-        if (microrects_) ctx.pass("bitmask_microrects", [&] { rects_->build(ranges_->hsm()); });
+        if (microrects_)
+            ctx.pass("bitmask_microrects", [&] {
+                rects_->build(ranges_->hsm(), own_ids_ ? &ranges_->hsmOwners() : nullptr);
+            });
         if (far_rects_)
-            ctx.pass("bitmask_far_microrects", [&] { far_rects_->build(ranges_->farLayer()); });
+            ctx.pass("bitmask_far_microrects", [&] {
+                far_rects_->build(ranges_->farLayer(), own_ids_ ? &ranges_->farOwners() : nullptr);
+            });
         if (neighbours_)
             ctx.pass("bitmask_neighbours", [&] {
-                neighbours_->build(ranges_->hsm(), rects_ ? &rects_->depth() : nullptr);
+                neighbours_->build(ranges_->hsm(), rects_ ? &rects_->depth() : nullptr,
+                                   own_ids_ ? &ranges_->hsmOwners() : nullptr);
             });
         if (far_neighbours_)
             ctx.pass("bitmask_far_neighbours", [&] {
                 far_neighbours_->build(ranges_->farLayer(),
-                                       far_rects_ ? &far_rects_->depth() : nullptr);
+                                       far_rects_ ? &far_rects_->depth() : nullptr,
+                                       own_ids_ ? &ranges_->farOwners() : nullptr);
             });
     }
     ctx.pass("bitmask_classify", [&] { classify(ctx, light, window, shadowed); });
@@ -178,6 +195,10 @@ const TechniqueInfo kBitmaskTechnique = {
         if (far)
             terms.push_back({"technique.layers", "the far layer's depth ranges and microrects",
                              saturatingProduct({m, m, 11 + 7})});
+        // Each layer's owners (RG32F mips), where a convex object casts and receives: counted
+        // always, as the scene is not known here.
+        terms.push_back({"technique.map_size", "the light maps' object ids",
+                         saturatingProduct({m, m, 11, far ? 2u : 1u})});
         // Gap filling's neighbour depths (RGBA32F mips), per layer that has them: the map's
         // only without microquads (they read the map their own way), the far layer's always.
         const bool quads = p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microquad;

@@ -157,6 +157,9 @@ private:
     Pattern pattern_;
     std::uint32_t seed_;
     bool far_layer_;  // layers 2
+    // Some object casts, receives and is convex (passes::GpuModel::convex): the maps carry object
+    // ids, so such a receiver leaves out micro-occluders of its own object alone (OWN_IDS)
+    bool own_ids_ = false;
     int budget_;
     std::string budget_map_file_;
     std::optional<BudgetMap> budget_map_;  // read by readInputs()

@@ -19,15 +19,16 @@ GLuint groupsFor(int size) {
 }
 }  // namespace
 
-DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer)
+DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer, bool own_ids)
     : map_size_(map_size),
-      hsm_(map_size, "bitmask hsm"),
-      depth_pass_("bitmask light depth", passes::LightDepthPass::Output::Distance) {
+      hsm_(map_size, "bitmask hsm", nullptr, own_ids),
+      depth_pass_("bitmask light depth", own_ids ? passes::LightDepthPass::Output::DistanceAndIds
+                                                 : passes::LightDepthPass::Output::Distance) {
     if (far_layer) {
         far_ = std::make_unique<passes::DistancePyramid>(map_size_, "bitmask far layer",
-                                                         &hsm_.depth());
-        peel_pass_ = std::make_unique<passes::LightDepthPass>("bitmask far layer peel",
-                                                              "techniques/bitmask/peel.frag");
+                                                         &hsm_.depth(), own_ids);
+        peel_pass_ = std::make_unique<passes::LightDepthPass>(
+            "bitmask far layer peel", "techniques/bitmask/peel.frag", own_ids);
     }
     if (accel == Accel::Hsm) return;
     ysm_ = accel == Accel::Ysm;

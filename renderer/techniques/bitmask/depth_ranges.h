@@ -23,8 +23,10 @@ enum class Accel { Hsm, Mssm, Ysm };
 class DepthRanges {
 public:
     // MAP_SIZE (a power of two) texels per side; for the YSM, the MSSM part has YSM_SIZE;
-    // FAR_LAYER: also the far layer (renderFarLayer()).
-    DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer = false);
+    // FAR_LAYER: also the far layer (renderFarLayer()); OWN_IDS: each level 0 texel's object id
+    // as well (hsmOwners(), farOwners()).
+    DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer = false,
+                bool own_ids = false);
 
     // Renders the casters' distance along the light's forward axis (empty texels: kEmpty)
     // into HSM level 0, through VIEW_PROJ from the light's centre.
@@ -49,6 +51,9 @@ public:
     const gl::Texture& mssm() const { return mssm_; }  // RG32F array, layer k: 2^k neighbourhoods
     // RG32F mips as hsm(); far layer only
     const gl::Texture& farLayer() const { return far_ ? far_->texture() : no_far_; }
+    // RG32F mips, level 0 (object id of each texel's caster (-1: none), kEmpty); OWN_IDS only
+    const gl::Texture& hsmOwners() const { return hsm_.owners(); }
+    const gl::Texture& farOwners() const { return far_ ? far_->owners() : no_far_; }
 
     static constexpr float kEmpty = passes::DistancePyramid::kEmpty;  // where no caster is
     // A surface belongs to the far layer when it lies more than this fraction of the front's

@@ -4,21 +4,26 @@
 
 #include <bit>
 
+#include "renderer/core/error.h"
 #include "renderer/gl/program.h"
 #include "renderer/techniques/bitmask/depth_ranges.h"
 
 namespace penumbra::techniques::bitmask {
 
-MicroRects::MicroRects(int map_size)
-    : map_size_(map_size), levels_(std::bit_width(static_cast<unsigned>(map_size))) {
+MicroRects::MicroRects(int map_size, bool own_ids)
+    : map_size_(map_size),
+      levels_(std::bit_width(static_cast<unsigned>(map_size))),
+      own_ids_(own_ids) {
     extent_ =
         gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "bitmask microrect extents", levels_);
     depth_ =
         gl::createTexture2D(GL_R32F, map_size_, map_size_, "bitmask microrect depths", levels_);
-    program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"});
+    program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"},
+                                {{"OWN_IDS", own_ids ? "1" : "0"}});
 }
 
-void MicroRects::build(const gl::Texture& hsm) {
+void MicroRects::build(const gl::Texture& hsm, const gl::Texture* owners) {
+    if (own_ids_ && !owners) throw RuntimeError("bitmask microrects: built without owners");
     glUseProgram(program_.id());
     gl::setUniform(program_, "u_empty", DepthRanges::kEmpty);
     glBindImageTexture(BITMASK_IMAGE_MICRORECTS_HSM0, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
@@ -34,6 +39,12 @@ void MicroRects::build(const gl::Texture& hsm) {
                            GL_WRITE_ONLY, GL_RGBA32F);
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_OUT, depth_.id(), level, GL_FALSE, 0,
                            GL_WRITE_ONLY, GL_R32F);
+        if (own_ids_) {
+            glBindImageTexture(BITMASK_IMAGE_MICRORECTS_OWNERS_IN, owners->id(), level - 1,
+                               GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+            glBindImageTexture(BITMASK_IMAGE_MICRORECTS_OWNERS_OUT, owners->id(), level, GL_FALSE,
+                               0, GL_WRITE_ONLY, GL_RG32F);
+        }
         const GLuint groups = static_cast<GLuint>(((map_size_ >> level) + 7) / 8);
         glDispatchCompute(groups, groups, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

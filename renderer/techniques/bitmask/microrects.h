@@ -9,10 +9,14 @@ namespace penumbra::techniques::bitmask {
 
 class MicroRects {
 public:
-    explicit MicroRects(int map_size);
+    // OWN_IDS: build() takes the casters' owners too.
+    explicit MicroRects(int map_size, bool own_ids = false);
     // Builds levels 1 and up from HSM (level 0 of an RG32F (min, max) pyramid, kEmpty where
-    // no caster is); level 0, the micropatches, is the HSM's and is left unwritten.
-    void build(const gl::Texture& hsm);
+    // no caster is); level 0, the micropatches, is the HSM's and is left unwritten. With
+    // OWN_IDS, OWNERS (passes::DistancePyramid::owners(), level 0 written) gets each level's
+    // microrects' owners: the object id of the nearest texel merged and the nearest distance of
+    // those of other objects (microrects.comp).
+    void build(const gl::Texture& hsm, const gl::Texture* owners = nullptr);
 
     // RGBA32F: x0, y0, x1, y1 (level-0 texels); levels 1 and up
     const gl::Texture& extent() const { return extent_; }
@@ -20,6 +24,7 @@ public:
 
 private:
     int map_size_, levels_;
+    bool own_ids_;
     gl::Texture extent_, depth_;
     gl::Program program_;
 };

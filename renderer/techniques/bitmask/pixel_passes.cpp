@@ -102,6 +102,11 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
         }
         if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
+        if (own_ids_) {
+            glBindTextureUnit(BITMASK_UNIT_VISIBILITY_OWNERS, ranges_->hsmOwners().id());
+            if (far_layer_)
+                glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_OWNERS, ranges_->farOwners().id());
+        }
         if (neighbours_)
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_NEIGHBOURS, neighbours_->texture().id());
         if (far_neighbours_)
