@@ -3,9 +3,9 @@
 // linearly; nearest or farthest surface by the host's depth test), with IDS also the object id
 // in colour 0; with DISTANCE, the distance as (min, max) in colour 0 (the level 0 of a min/max
 // pyramid) under the rasteriser's own depth, and with IDS too (object id, 1e30) in colour 1 (the
-// texel's owner: passes::DistancePyramid::owners()); with
-// RANGE, the depth in colours 0 and 1, which MIN and MAX blending keep as the nearest and the
-// farthest surface in one draw (no depth test).
+// texel's owner: passes::DistancePyramid::owners()); with RANGE, the depth in colours 0 and 1,
+// which MIN and MAX blending keep as the nearest and the farthest surface in one draw (no depth
+// test).
 #ifndef IDS
 #define IDS 0
 #endif
