@@ -64,7 +64,7 @@ std::unique_ptr<GpuModel> uploadModel(const scene::Model& m) {
         g->triangles += mesh.indices.size() / 3;
     }
     g->closed = scene::isClosedSurface(m);
-    g->convex = g->closed && scene::isConvexSurface(m);
+    g->convex = g->closed && scene::isConvexGivenClosed(m);
     const std::string label = "model " + m.source;
     g->vao = gl::createVertexArray(label);
     g->positions = uploadBuffer(pos, label + " positions");

@@ -101,7 +101,10 @@ bool isClosedSurface(const Model& model) {
 }
 
 bool isConvexSurface(const Model& model) {
-    if (!isClosedSurface(model)) return false;
+    return isClosedSurface(model) && isConvexGivenClosed(model);
+}
+
+bool isConvexGivenClosed(const Model& model) {
     glm::vec3 lo(1e30f), hi(-1e30f);
     double triangles = 0, points = 0;
     for (const Mesh& mesh : model.meshes) {

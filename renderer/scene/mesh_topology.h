@@ -20,5 +20,8 @@ bool isClosedSurface(const Model& model);
 // Models whose triangles times vertices exceed kConvexTestBudget are taken as not convex.
 inline constexpr double kConvexTestBudget = 4e7;
 bool isConvexSurface(const Model& model);
+// isConvexSurface() of a model isClosedSurface() already called closed: its vertex test alone,
+// so the upload welds a model once.
+bool isConvexGivenClosed(const Model& closed_model);
 
 }  // namespace penumbra::scene

@@ -102,7 +102,7 @@ void Bitmask::visibility(frame::FrameContext& ctx, const scene::RectLight& light
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_RECT_DEPTH, rects_->depth().id());
         }
         if (far_layer_) glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR, ranges_->farLayer().id());
-        if (own_ids_) {
+        if (own_ids_ && !gap_fill_) {  // with gap filling the neighbour depths carry them
             glBindTextureUnit(BITMASK_UNIT_VISIBILITY_OWNERS, ranges_->hsmOwners().id());
             if (far_layer_)
                 glBindTextureUnit(BITMASK_UNIT_VISIBILITY_FAR_OWNERS, ranges_->farOwners().id());
