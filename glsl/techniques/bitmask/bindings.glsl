@@ -46,6 +46,12 @@
 #define BITMASK_IMAGE_MICRORECTS_DEPTH_OUT 4
 #define BITMASK_IMAGE_MICRORECTS_OWNERS_IN 5   // OWN_IDS: the level below's owners
 #define BITMASK_IMAGE_MICRORECTS_OWNERS_OUT 6  // and the level's
+// caster_sums.comp: the map (HSM level 0) and the table; microrect_fit.comp: a level's
+// extents (read and written) and the table
+#define BITMASK_IMAGE_CASTER_SUMS_MAP 0
+#define BITMASK_IMAGE_CASTER_SUMS 1
+#define BITMASK_IMAGE_MICRORECT_FIT_EXTENT 3
+#define BITMASK_IMAGE_MICRORECT_FIT_SUMS 2
 // neighbours.comp
 #define BITMASK_UNIT_NEIGHBOURS_SOURCE 0
 #define BITMASK_UNIT_NEIGHBOURS_OWNERS 1  // OWN_IDS

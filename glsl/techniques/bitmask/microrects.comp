@@ -121,12 +121,16 @@ void take(inout Merged m, ivec2 q) {
         m.other = min(m.other, iq == m.id ? oq : zq);
     }
 }
-// Pass 1 of the microrect with reference point A + O: A, B and D by depth, E by containment.
+// Pass 1 of the microrect with reference point A + O: A, B and D by depth, E by containment,
+// or whatever its extent where no microrect at A + O + (2, 2) would take it in pass 2 (the
+// level's last row or column): left there, a caster on the map's top or right edge, where the
+// light's window puts the casters' bounds, lost texels at every coarser level.
 Merged firstPass(ivec2 o) {
     Merged m = Merged(extentAt(o), depthAt(o), idAt(o), otherAt(o));
     if (mergesDown(o + ivec2(1, 0), o, o + ivec2(2, 0))) take(m, o + ivec2(1, 0));
     if (mergesDown(o + ivec2(0, 1), o, o + ivec2(0, 2))) take(m, o + ivec2(0, 1));
-    if (inside(o + 1) && contains(m.extent, extentAt(o + 1))) take(m, o + 1);
+    if (inside(o + 1) && (contains(m.extent, extentAt(o + 1)) || !inside(o + 2)))
+        take(m, o + 1);
     return m;
 }
 

@@ -96,9 +96,10 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
         samples_ = bitmask::pointTexture(points);
         if (microquads_) edges_ = bitmask::edgeTexture(points);
     }
-    if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_);
+    const bool fit = params_.getEnum(kRectFit) == RectFit::Coverage;
+    if (microrects_) rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_, fit);
     if (microrects_ && far_layer_)
-        far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_);
+        far_rects_ = std::make_unique<bitmask::MicroRects>(map_size_, own_ids_, fit);
     if (gap_fill_ && !microquads_)
         neighbours_ = std::make_unique<bitmask::NeighbourDepths>(map_size_, own_ids_);
     if (gap_fill_ && far_layer_)
@@ -199,6 +200,11 @@ const TechniqueInfo kBitmaskTechnique = {
         // always, as the scene is not known here.
         terms.push_back({"technique.map_size", "the light maps' object ids",
                          saturatingProduct({m, m, 11, far ? 2u : 1u})});
+        // The microrects' fit: a summed-area table of the casters (RGBA32UI), per layer.
+        if (p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microrect &&
+            p.getEnum(bitmask::kRectFit) == bitmask::RectFit::Coverage)
+            terms.push_back({"technique.rect_fit", "the casters' summed-area tables",
+                             saturatingProduct({m, m, 16, far ? 2u : 1u})});
         // Gap filling's neighbour depths (RGBA32F mips), per layer that has them: the map's
         // only without microquads (they read the map their own way), the far layer's always.
         const bool quads = p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microquad;

@@ -28,12 +28,14 @@ namespace penumbra::techniques::bitmask {
 
 enum class Occluders { Micropatch, Microquad, Microrect };
 enum class Visibility { Bitmask, Area };
+enum class RectFit { Bounds, Coverage };
 
 // ACCEL in the shaders is the enum's index: 0 hsm, 1 mssm, 2 ysm (bitmask/search.glsl).
 inline constexpr EnumKey<Accel, 3> kAccel{"accel", {"hsm", "mssm", "ysm"}};
 inline constexpr EnumKey<Occluders, 3> kOccluders{"occluders",
                                                   {"micropatch", "microquad", "microrect"}};
 inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "area"}};
+inline constexpr EnumKey<RectFit, 2> kRectFit{"rect_fit", {"bounds", "coverage"}};
 
 inline constexpr IntKey kYsmSize{"ysm_size"};
 inline constexpr IntKey kBits{"bits"};
@@ -62,6 +64,10 @@ inline constexpr std::array kBitmaskParams = {
     enumParam(kOccluders, Occluders::Microrect,
               "micro-occluders: microrects merged per level (5.2), texels, or quads between "
               "texel centres (bitmask only)"),
+    enumParam(kRectFit, RectFit::Coverage,
+              "microrects' extent: the bounding rectangle of what they merged (the paper), or "
+              "that rectangle shrunk to the area of the texels merged, about their mean (coarse "
+              "levels overestimate less)"),
     enumParam(kVisibility, Visibility::Bitmask,
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam(kBits, 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),

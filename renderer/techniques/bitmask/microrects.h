@@ -9,8 +9,10 @@ namespace penumbra::techniques::bitmask {
 
 class MicroRects {
 public:
-    // OWN_IDS: build() takes the casters' owners too.
-    explicit MicroRects(int map_size, bool own_ids = false);
+    // OWN_IDS: build() takes the casters' owners too. FIT: once the next level is built, each
+    // level's extents are shrunk to the area of the caster texels inside them, about their mean
+    // (microrect_fit.comp, from a summed-area table of the casters: caster_sums.comp).
+    explicit MicroRects(int map_size, bool own_ids = false, bool fit = false);
     // Builds levels 1 and up from HSM (level 0 of an RG32F (min, max) pyramid, kEmpty where
     // no caster is); level 0, the micropatches, is the HSM's and is left unwritten. With
     // OWN_IDS, OWNERS (passes::DistancePyramid::owners(), level 0 written) gets each level's
@@ -24,9 +26,13 @@ public:
 
 private:
     int map_size_, levels_;
-    bool own_ids_;
-    gl::Texture extent_, depth_;
-    gl::Program program_;
+    bool own_ids_, fit_;
+    gl::Texture extent_, depth_, sums_;
+    gl::Program program_, sums_program_, fit_program_;
+
+    void sumCasters(const gl::Texture& hsm);
+
+    void fitLevel(int level);
 };
 
 }  // namespace penumbra::techniques::bitmask
