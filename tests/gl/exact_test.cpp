@@ -242,10 +242,12 @@ Errors errorsAgainst(const Image& exact, const Image& img, int only_id = -2) {
 // 0.0167 (1.108x: both fell, visibility more). With the light-sample masks (accumulate=samples,
 // far_side=second and its third map, seal) both fell again, visibility more: 0.0075 and 0.0094
 // (1.25x). With the light windows fitted to each caster (finer maps on this scene of several
-// casters) both fell again, visibility more: 0.0061 and 0.0084 (1.38x), so 1.45.
+// casters) both fell again, visibility more: 0.0061 and 0.0084 (1.38x), so 1.45. bitmask's
+// coarse microrects shrunk to the casters inside them (rect_fit) lowered both again, visibility
+// more: 0.0087 and 0.0116 (1.33x), so 1.4.
 // Every other technique is strict.
 double horizonSlack(std::string_view name) {
-    return name == "css" ? 1.1 : name == "bitmask" ? 1.25 : name == "ssm" ? 1.45 : 1.0;
+    return name == "css" ? 1.1 : name == "bitmask" ? 1.4 : name == "ssm" ? 1.45 : 1.0;
 }
 
 std::string techniqueJson(std::string_view name) {

@@ -66,8 +66,8 @@ inline constexpr std::array kBitmaskParams = {
               "texel centres (bitmask only)"),
     enumParam(kRectFit, RectFit::Coverage,
               "microrects' extent: the bounding rectangle of what they merged (the paper), or "
-              "that rectangle shrunk to the area of the texels merged, about their mean (coarse "
-              "levels overestimate less)"),
+              "that rectangle shrunk to the area of the caster texels inside it, about their "
+              "mean (coarse levels overestimate less)"),
     enumParam(kVisibility, Visibility::Bitmask,
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam(kBits, 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
