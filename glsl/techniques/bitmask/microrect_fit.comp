@@ -9,12 +9,11 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 // x0, y0, x1, y1 (level-0 texels, inclusive; x0 > x1: no caster): read, and written shrunk
 layout(rgba32f, binding = BITMASK_IMAGE_MICRORECT_FIT_EXTENT) uniform image2D u_extent;
-// caster_sums.comp's table
+// caster_sums.comp's summed-area table: (casters, sum of x, sum of y) over [0, x) x [0, y)
 layout(rgba32ui, binding = BITMASK_IMAGE_MICRORECT_FIT_SUMS) uniform readonly uimage2D u_sums;
 
-uvec3 sumTo(int x, int y) {
-    return x < 0 || y < 0 ? uvec3(0u) : imageLoad(u_sums, ivec2(x, y)).xyz;
-}
+// The sums over level-0 texels [0, x] x [0, y].
+uvec3 sumTo(int x, int y) { return imageLoad(u_sums, ivec2(x + 1, y + 1)).xyz; }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

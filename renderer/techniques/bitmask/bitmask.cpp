@@ -204,7 +204,7 @@ const TechniqueInfo kBitmaskTechnique = {
         if (p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microrect &&
             p.getEnum(bitmask::kRectFit) == bitmask::RectFit::Coverage)
             terms.push_back({"technique.rect_fit", "the casters' summed-area tables",
-                             saturatingProduct({m, m, 16, far ? 2u : 1u})});
+                             saturatingProduct({m + 1, m + 1, 16, far ? 2u : 1u})});
         // Gap filling's neighbour depths (RGBA32F mips), per layer that has them: the map's
         // only without microquads (they read the map their own way), the far layer's always.
         const bool quads = p.getEnum(bitmask::kOccluders) == bitmask::Occluders::Microquad;

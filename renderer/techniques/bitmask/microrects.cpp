@@ -22,7 +22,8 @@ MicroRects::MicroRects(int map_size, bool own_ids, bool fit)
     program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"},
                                 {{"OWN_IDS", own_ids ? "1" : "0"}});
     if (fit_) {
-        sums_ = gl::createTexture2D(GL_RGBA32UI, map_size_, map_size_, "bitmask caster sums");
+        sums_ = std::make_unique<passes::SummedAreaTable>(map_size_, 1, "bitmask caster sums",
+                                                          passes::SummedAreaTable::Texel::Unsigned);
         sums_program_ =
             gl::buildProgram("bitmask caster sums", {"techniques/bitmask/caster_sums.comp"});
         fit_program_ =
@@ -30,20 +31,17 @@ MicroRects::MicroRects(int map_size, bool own_ids, bool fit)
     }
 }
 
-// The summed-area table of HSM's caster texels: rows, then columns.
+// The summed-area table of HSM's caster texels: our rows, then the table's columns.
 void MicroRects::sumCasters(const gl::Texture& hsm) {
     glUseProgram(sums_program_.id());
     gl::setUniform(sums_program_, "u_empty", DepthRanges::kEmpty);
     glBindImageTexture(BITMASK_IMAGE_CASTER_SUMS_MAP, hsm.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
                        GL_RG32F);
-    glBindImageTexture(BITMASK_IMAGE_CASTER_SUMS, sums_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                       GL_RGBA32UI);
-    const GLuint groups = static_cast<GLuint>((map_size_ + 63) / 64);
-    for (int pass = 0; pass < 2; ++pass) {
-        gl::setUniform(sums_program_, "u_pass", pass);
-        glDispatchCompute(groups, 1, 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
+    glBindImageTexture(BITMASK_IMAGE_CASTER_SUMS, sums_->table().id(), 0, GL_FALSE, 0,
+                       GL_WRITE_ONLY, GL_RGBA32UI);
+    glDispatchCompute(static_cast<GLuint>((map_size_ + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    sums_->sumColumns();
 }
 
 // Shrinks LEVEL's extents to their coverage; only once the level above has been merged from
@@ -52,8 +50,8 @@ void MicroRects::fitLevel(int level) {
     glUseProgram(fit_program_.id());
     glBindImageTexture(BITMASK_IMAGE_MICRORECT_FIT_EXTENT, extent_.id(), level, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(BITMASK_IMAGE_MICRORECT_FIT_SUMS, sums_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
-                       GL_RGBA32UI);
+    glBindImageTexture(BITMASK_IMAGE_MICRORECT_FIT_SUMS, sums_->table().id(), 0, GL_FALSE, 0,
+                       GL_READ_ONLY, GL_RGBA32UI);
     const GLuint groups = static_cast<GLuint>(((map_size_ >> level) + 7) / 8);
     glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

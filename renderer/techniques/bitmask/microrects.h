@@ -3,7 +3,10 @@
 // greedy two-pass merge of the next finer level; extent and depth in two mip-chained textures.
 #pragma once
 
+#include <memory>
+
 #include "renderer/gl/handles.h"
+#include "renderer/passes/summed_area_table.h"
 
 namespace penumbra::techniques::bitmask {
 
@@ -27,7 +30,8 @@ public:
 private:
     int map_size_, levels_;
     bool own_ids_, fit_;
-    gl::Texture extent_, depth_, sums_;
+    gl::Texture extent_, depth_;
+    std::unique_ptr<passes::SummedAreaTable> sums_;
     gl::Program program_, sums_program_, fit_program_;
 
     void sumCasters(const gl::Texture& hsm);
