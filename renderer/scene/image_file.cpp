@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 
 #include <fcntl.h>
@@ -16,6 +17,7 @@
 #include "renderer/core/json_bounds.h"
 #include "renderer/core/memory_limit.h"
 #include "renderer/core/oiio_module.h"
+#include "renderer/core/png_chunks.h"
 #include "renderer/core/regular_file.h"
 #include "renderer/output/exr.h"
 
@@ -150,6 +152,13 @@ FloatImage readFloatImage(const std::filesystem::path& path, const std::string& 
         throw InputError(label + ": expected " + std::string(expected));
     requireRegularFile(path, label);
     if (extension == ".exr") return readExrFile(path, label, max_size, channels);
+    if (extension == ".png") {  // before libpng allocates what a chunk declares
+        std::error_code error;
+        const std::uintmax_t size = std::filesystem::file_size(path, error);
+        std::ifstream in(path, std::ios::binary);
+        if (const std::string why = error ? "" : pngChunkProblem(in, size); !why.empty())
+            throw InputError(label + ": cannot read image: " + why);
+    }
 
     OiioModule& oiio = oiioModule();
     const QuietStderr quiet;

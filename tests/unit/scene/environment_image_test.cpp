@@ -104,6 +104,26 @@ TEST(EnvironmentImage, Refusals) {
     expectMessage(inputErrorOf([&] { loadEnvironmentImage(dir); }), dir.string() + ": is a folder");
 }
 
+// A file is read by the reader its name says, or refused: a TIFF named .hdr is not an
+// environment map. OpenImageIO's own open() tries every reader it has where the named one fails,
+// which read such a file, and spent seconds on a damaged PNG (the fuzz corpus's
+// truncated_text_chunk.png).
+TEST(EnvironmentImage, AFileOfAnotherFormatThanItsNameIsRefused) {
+    const auto tiff = test::scratchDir() / "sky_as_tiff.tif";
+    {
+        auto out = OIIO::ImageOutput::create(tiff.string());
+        ASSERT_TRUE(out);
+        const std::vector<float> pixels(2 * 3, 0.5f);
+        ASSERT_TRUE(out->open(tiff.string(), OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::FLOAT)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+        out->close();
+    }
+    const auto disguised = test::scratchDir() / "sky_as_tiff.hdr";
+    std::filesystem::rename(tiff, disguised);
+    expectMessage(inputErrorOf([&] { loadEnvironmentImage(disguised); }),
+                  disguised.string() + ": cannot read image");
+}
+
 // An OpenEXR header attribute that declares more bytes than the file holds is refused before
 // the decoder allocates it (a 1 KB file claiming 800 MB cost 840 MB and seconds).
 TEST(EnvironmentImage, AnExrAttributeLargerThanTheFileIsRefused) {
