@@ -45,8 +45,8 @@ private:
 
 // Opens NAME with the reader of EXTENSION's format alone (through PROXY where given): where that
 // reader fails, ImageInput::open() tries every other format OpenImageIO has, dozens of plugins,
-// which took seconds on a damaged PNG (a fuzz finding) and read a file of another format than its
-// name says. Empty, with ERROR, where it cannot.
+// which read a file of another format than its name says and, on a damaged PNG (a fuzz finding),
+// doubled the time the PNG reader spent (png_chunks.h). Empty, with ERROR, where it cannot.
 std::unique_ptr<OIIO::ImageInput> openAs(const std::string& name, const std::string& extension,
                                          OIIO::Filesystem::IOProxy* proxy, std::string& error) {
     // By the extension without its dot: ".hdr" alone reads as a file name with no extension.
