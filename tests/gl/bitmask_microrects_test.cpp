@@ -1,6 +1,7 @@
 // `bitmask` microrects (techniques/bitmask/microrects.h) built from a synthetic map: every
 // level's extents cover the caster texels, and `rect_fit` coverage shrinks a rectangle to the
-// area of the casters inside it, within the bounding rectangle of the paper's merge.
+// area of the casters inside it, within the bounding rectangle of the paper's merge; each keeps
+// its nearest and farthest caster texel.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -86,4 +87,30 @@ TEST(BitmaskMicroRectsGL, EveryLevelCoversTheCastersAndTheFitShrinksToThoseInsid
                 }
     }
     EXPECT_GT(shrunk, 10);  // the hypotenuse's blocks
+}
+
+TEST(BitmaskMicroRectsGL, EachMicrorectKeepsItsNearestAndFarthestCasterTexel) {
+    // `split` reads the farthest caster texel a microrect merged beside its nearest. The map's
+    // distance grows with x alone, and the paper's bounding rectangle (`rect_fit` bounds) has a
+    // merged texel in its first column and one in its last: its nearest is its first column's
+    // distance and its farthest its last's, at every level.
+    penumbra::testing::glInfo();
+    const gl::Texture m = casterMap();
+    MicroRects bounds(kMapSide, false, false);
+    bounds.build(m);
+    int spread = 0;
+    for (int k = 1; (kMapSide >> k) >= 1; ++k) {
+        SCOPED_TRACE("level " + std::to_string(k));
+        const auto box = levelTexels(bounds.extent(), k), depth = levelTexels(bounds.depth(), k);
+        for (size_t i = 0; i < box.size(); i += 4) {
+            if (box[i] > box[i + 2]) {
+                EXPECT_GE(depth[i], DepthRanges::kEmpty);  // no caster
+                continue;
+            }
+            EXPECT_NEAR(depth[i], 2.0 + box[i] / 100.0, 1e-5);
+            EXPECT_NEAR(depth[i + 1], 2.0 + box[i + 2] / 100.0, 1e-5);
+            spread += depth[i + 1] > depth[i] ? 1 : 0;
+        }
+    }
+    EXPECT_GT(spread, 10);
 }

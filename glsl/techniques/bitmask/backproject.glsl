@@ -143,6 +143,17 @@ float occluderDepth(int layer, ivec2 xy, int level) {
     return texelFetch(u_hsm, xy, level).r;
 }
 
+#if MICRORECTS
+// The distance of the farthest caster texel that microrect (X, Y) of LEVEL (> 0) of LAYER
+// merged (microrects.comp).
+float occluderFar(int layer, ivec2 xy, int level) {
+#if LAYERS == 2
+    if (layer == 1) return texelFetch(u_far_rect_depth, xy, level).g;
+#endif
+    return texelFetch(u_rect_depth, xy, level).g;
+}
+#endif
+
 #if BITMASK
 int maskIndex(float u) {
     return clamp(int(ceil(u * float(u_mask_resolution) - 0.5)), 0, u_mask_resolution);
@@ -198,6 +209,18 @@ bool ownSurface(vec4 plane, vec4 w, float zo) {
     return lowest <= dot(n, u_texel) * zo && highest <= dot(n, w.zw - w.xy) * zo;
 }
 
+#if GAP_FILL
+// Light rectangle L (lightRect()) of micro-occluder W at distance ZO, seen from P (biased depth
+// PZ), extended towards the neighbours it joins() at distances Z (left, right, below, above).
+vec4 fillGaps(vec3 p, vec4 w, float zo, vec4 z, float pz, vec4 l) {
+    if (joins(zo, z.x, pz)) l.x = min(l.x, onLight(w.x, p.x, p.z, z.x));
+    if (joins(zo, z.y, pz)) l.z = max(l.z, onLight(w.z, p.x, p.z, z.y));
+    if (joins(zo, z.z, pz)) l.y = min(l.y, onLight(w.y, p.y, p.z, z.z));
+    if (joins(zo, z.w, pz)) l.w = max(l.w, onLight(w.w, p.y, p.z, z.w));
+    return l;
+}
+#endif
+
 // Whether micro-occluder (X, Y) of LEVEL of LAYER is the receiver's convex object OWN
 // (receiverAt()) and what else it merged lies behind the receiver's biased depth PZ. A convex
 // object hides from a point of its surface only the light below the tangent plane there (the
@@ -230,6 +253,108 @@ bool ownObject(int layer, int x, int y, int level, int own, float pz, float owne
 #endif
 }
 
+// The light-plane rectangle (x0, y0, x1, y1) that micro-occluder W (window rectangle) at
+// distance ZO hides from receiver P.
+vec4 lightRect(vec3 p, vec4 w, float zo) {
+    return vec4(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo),
+                onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
+}
+
+// Adds light-plane rectangle L (lightRect()) to C: the light samples inside it, or its area.
+void cover(vec4 l, inout Coverage c) {
+    vec2 scale = 0.5 / u_light_half;
+    vec2 uv0 = clamp(l.xy * scale + 0.5, 0.0, 1.0);
+    vec2 uv1 = clamp(l.zw * scale + 0.5, 0.0, 1.0);
+    if (uv0.x >= uv1.x || uv0.y >= uv1.y) return;
+#if BITMASK
+    int x0 = 2 * maskIndex(uv0.x), x1 = 2 * maskIndex(uv1.x);
+    int y0 = 2 * (maskIndex(uv0.y) + u_mask_resolution + 1);
+    int y1 = 2 * (maskIndex(uv1.y) + u_mask_resolution + 1);
+    c.m0 |= b_masks[x0] & ~b_masks[x1] & b_masks[y0] & ~b_masks[y1];
+    c.m1 |= b_masks[x0 + 1] & ~b_masks[x1 + 1] & b_masks[y0 + 1] & ~b_masks[y1 + 1];
+#else
+    c.occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
+#endif
+}
+
+#if MICRORECTS
+#include "techniques/bitmask/split_flag.glsl"
+// Splitting (`split`; not in the paper): a microrect takes the nearest depth of the casters it
+// merged (5.2), so one that merged a far caster with a near one casts the far one's shadow from
+// the near one's depth: too small, and displaced. A board floating between the light and a ball
+// lightened the shadows of both on the floor below at coarse levels (random scene rand9803).
+// Such a microrect (marked by microrects.comp: split_flag.glsl) gives way to the finer level's
+// microrects whose reference points lie next to its own (those it can have merged: A - 1 .. A +
+// 1 on both axes), each at its own depth, where that moves its shadow enough (splits()). With a
+// bitmask a microrect back-projected twice costs only time (BITMASK 0 adds its area twice, as it
+// does for overlapping microrects).
+uniform float u_split;  // the light's share (of its side) a split must move; 0: no splitting
+// The marked microrects a pixel takes per layer and level: more are back-projected whole. They
+// wait until the level's rows are done (backprojectLayer()): a split's own loop inside the rows'
+// loop made the pass 2.3x slower on llvmpipe at 1024 x 768 where nothing split (default scene),
+// as a software rasteriser runs a branch's code for every pixel of its group, and a fetch of
+// the farthest distance for every micro-occluder 1.3x.
+const int kPendingSplits = 16;
+
+// Whether the marked microrect W (window rectangle) that hides light rectangle L (lightRect())
+// from P at its nearest depth should be split: back-projected from its farthest caster texel's
+// distance ZF instead, one of L's sides would move by more than u_split of the light's side. A
+// farthest texel behind the receiver's biased depth PZ counts as lying just in front of it: such
+// a microrect's extent covers some of what does not shadow P.
+bool splits(vec3 p, vec4 w, vec4 l, float zf, float pz) {
+    vec4 far = lightRect(p, w, min(zf, pz * 0.999));
+    vec4 moved = abs(far - l) * (0.5 / u_light_half).xyxy;
+    return max(max(moved.x, moved.y), max(moved.z, moved.w)) > u_split;
+}
+
+// Back-projects micro-occluder Q of LEVEL of LAYER (window rectangle W at distance ZO, light
+// rectangle L) into C, extended towards its neighbours with gap filling, as backprojectLayer()
+// does inside its rows (which slide the neighbours' depths along instead of fetching them).
+void backprojectOne(int layer, vec3 p, float pz, ivec2 q, int level, vec4 w, float zo, vec4 l,
+                    inout Coverage c, inout int count) {
+    ++count;
+#if GAP_FILL
+    int n = u_map_size >> level;
+    float zl = q.x > 0 ? occluderDepth(layer, q - ivec2(1, 0), level) : pz;
+    float zr = q.x < n - 1 ? occluderDepth(layer, q + ivec2(1, 0), level) : pz;
+    l = fillGaps(p, w, zo, vec4(zl, zr, occluderColumn(layer, q, level).yz), pz, l);
+#endif
+    cover(l, c);
+}
+
+// Back-projects the marked microrect XY of LEVEL of LAYER, or where splits() says so, in its
+// place the microrects of LEVEL - 1 whose reference points lie next to its own (see above), as
+// backprojectLayer() does its own.
+void backprojectMarked(int layer, vec3 p, vec4 plane, int own, float pz, ivec2 xy, int level,
+                       inout Coverage c, inout int count) {
+    vec2 t = u_texel * float(1 << level);
+    float z = occluderDepth(layer, xy, level);
+    vec4 w = occluderWindow(layer, xy.x, xy.y, level, t);
+    vec4 l = lightRect(p, w, z);
+    if (!splits(p, w, l, occluderFar(layer, xy, level), pz)) {
+        backprojectOne(layer, p, pz, xy, level, w, z, l, c, count);
+        return;
+    }
+    int k1 = level - 1;
+    ivec2 n = ivec2(u_map_size >> k1);
+    t *= 0.5;
+    for (int k = 0; k < 9; ++k) {
+        ivec2 q = 2 * xy + ivec2(k % 3, k / 3) - 1;
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, n))) continue;
+        float zo = occluderDepth(layer, q, k1);
+        if (zo >= pz) continue;
+        vec4 wq = occluderWindow(layer, q.x, q.y, k1, t);
+#if GAP_FILL
+        float owner = occluderColumn(layer, q, k1).w;
+#else
+        float owner = 0.0;
+#endif
+        if (ownSurface(plane, wq, zo) || ownObject(layer, q.x, q.y, k1, own, pz, owner)) continue;
+        backprojectOne(layer, p, pz, q, k1, wq, zo, lightRect(p, wq, zo), c, count);
+    }
+}
+#endif
+
 // Back-projects the micro-occluders of LEVEL of LAYER in the texel range R (levelRange()) for
 // receiver P (biased depth PZ) into C, but those ownSurface() finds of P's tangent plane PLANE
 // and those ownObject() finds of its convex object OWN;
@@ -239,7 +364,11 @@ bool ownObject(int layer, int x, int y, int level, int own, float pz, float owne
 bool backprojectLayer(int layer, vec3 p, vec4 plane, int own, float pz, ivec4 r, int level,
                       inout Coverage c, inout int count) {
     int n = u_map_size >> level;
-    vec2 t = u_texel * float(1 << level), scale = 0.5 / u_light_half;
+    vec2 t = u_texel * float(1 << level);
+#if MICRORECTS
+    ivec2 marked[kPendingSplits];  // marked microrects (split_flag.glsl), back-projected last
+    int pending = 0;
+#endif
     for (int y = r.y; y <= r.w; ++y) {
         float zl = r.x > 0 ? occluderDepth(layer, ivec2(r.x - 1, y), level) : pz;
 #if GAP_FILL
@@ -264,29 +393,19 @@ bool backprojectLayer(int layer, vec3 p, vec4 plane, int own, float pz, ivec4 r,
 #endif
             if (zo < pz && !ownSurface(plane, w, zo) &&
                 !ownObject(layer, x, y, level, own, pz, owner)) {
-                ++count;
-                vec2 l0 = vec2(onLight(w.x, p.x, p.z, zo), onLight(w.y, p.y, p.z, zo));
-                vec2 l1 = vec2(onLight(w.z, p.x, p.z, zo), onLight(w.w, p.y, p.z, zo));
-#if GAP_FILL
-                float zd = co.y, zu = co.z;
-                if (joins(zo, zl, pz)) l0.x = min(l0.x, onLight(w.x, p.x, p.z, zl));
-                if (joins(zo, zr, pz)) l1.x = max(l1.x, onLight(w.z, p.x, p.z, zr));
-                if (joins(zo, zd, pz)) l0.y = min(l0.y, onLight(w.y, p.y, p.z, zd));
-                if (joins(zo, zu, pz)) l1.y = max(l1.y, onLight(w.w, p.y, p.z, zu));
-#endif
-                vec2 uv0 = clamp(l0 * scale + 0.5, 0.0, 1.0);
-                vec2 uv1 = clamp(l1 * scale + 0.5, 0.0, 1.0);
-                if (uv0.x < uv1.x && uv0.y < uv1.y) {
-#if BITMASK
-                    int x0 = 2 * maskIndex(uv0.x), x1 = 2 * maskIndex(uv1.x);
-                    int y0 = 2 * (maskIndex(uv0.y) + u_mask_resolution + 1);
-                    int y1 = 2 * (maskIndex(uv1.y) + u_mask_resolution + 1);
-                    c.m0 |= b_masks[x0] & ~b_masks[x1] & b_masks[y0] & ~b_masks[y1];
-                    c.m1 |= b_masks[x0 + 1] & ~b_masks[x1 + 1] & b_masks[y0 + 1] &
-                            ~b_masks[y1 + 1];
+#if MICRORECTS
+                if (level > 0 && u_split > 0.0 && splitMarked(zo) && pending < kPendingSplits) {
+                    marked[pending++] = ivec2(x, y);
+                } else {
 #else
-                    c.occluded += (uv1.x - uv0.x) * (uv1.y - uv0.y);
+                {
 #endif
+                    ++count;
+                    vec4 l = lightRect(p, w, zo);
+#if GAP_FILL
+                    l = fillGaps(p, w, zo, vec4(zl, zr, co.yz), pz, l);
+#endif
+                    cover(l, c);
                 }
             }
             zl = zo;
@@ -299,6 +418,13 @@ bool backprojectLayer(int layer, vec3 p, vec4 plane, int own, float pz, ivec4 r,
         if (maskFull(c.m0, c.m1)) return true;
 #endif
     }
+#if MICRORECTS
+    for (int i = 0; i < pending; ++i)
+        backprojectMarked(layer, p, plane, own, pz, marked[i], level, c, count);
+#if BITMASK
+    if (maskFull(c.m0, c.m1)) return true;
+#endif
+#endif
     return false;
 }
 

@@ -35,6 +35,7 @@
 // peel.frag: the front map's distances (HSM level 0); not 0, where the scene's draw binds a
 // material's base colour texture (UNIT_BASE_TEXTURE)
 #define BITMASK_UNIT_PEEL_FRONT 1
+#define BITMASK_UNIT_PEEL_FRONT_OWNERS 2  // and its owners (IDS 1)
 // Image units of mssm.comp and microrects.comp (the HSM's: passes/distance_pyramid.comp).
 #define BITMASK_IMAGE_MSSM_BELOW 0  // the layer below (or the HSM level), one 2D layer
 #define BITMASK_IMAGE_MSSM 1        // the layer written

@@ -6,23 +6,28 @@
 // the diagonal E (2X+1, 2Y+1) when the merged extent contains E's. Pass 2 takes the negative
 // neighbours (2X-1, 2Y), (2X, 2Y-1), (2X-1, 2Y-1) that their own pass 1 left. Extent: the
 // bounding rectangle of the merged extents (level-0 texels, inclusive; x0 > x1 = no caster);
-// depth: their minimum. Level 1 (u_from_hsm = 1) merges the HSM's level-0 texels, the level-0
-// micropatches, which are not stored. The 14 depths the merge reads are loaded once, and a
+// depth: their minimum, beside the farthest caster texel merged (backproject.glsl splits a
+// microrect whose two lie apart: section 5.2's minimum alone puts a far caster merged with a
+// near one at the near one's depth), the minimum marked where they do (split_flag.glsl).
+// Level 1 (u_from_hsm = 1) merges the HSM's level-0 texels, the level-0 micropatches, which are
+// not stored. The 14 depths the merge reads are loaded once, and a
 // texel without caster (depth u_empty) has no extent to load. OWN_IDS 1: each microrect's
 // object id too, that of its nearest texel (-1: none), and the nearest distance of the texels
 // it merged of other objects (u_empty: none), so a receiver of that object can tell what else
 // lies under it.
 #include "techniques/bitmask/bindings.glsl"
+#include "techniques/bitmask/split_flag.glsl"
 #ifndef OWN_IDS
 #define OWN_IDS 0
 #endif
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_HSM0) uniform readonly image2D u_hsm0;
 layout(rgba32f, binding = BITMASK_IMAGE_MICRORECTS_EXTENT_IN) uniform readonly image2D u_extent_in;
-layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_IN) uniform readonly image2D u_depth_in;
+// (nearest, farthest) caster texel merged
+layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_IN) uniform readonly image2D u_depth_in;
 layout(rgba32f,
        binding = BITMASK_IMAGE_MICRORECTS_EXTENT_OUT) uniform writeonly image2D u_extent_out;
-layout(r32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_OUT) uniform writeonly image2D u_depth_out;
+layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_DEPTH_OUT) uniform writeonly image2D u_depth_out;
 #if OWN_IDS
 // (object id, the nearest distance of other objects' texels merged)
 layout(rg32f, binding = BITMASK_IMAGE_MICRORECTS_OWNERS_IN) uniform readonly image2D u_owners_in;
@@ -36,6 +41,7 @@ const vec4 kNone = vec4(1e9, 1e9, -1e9, -1e9);
 ivec2 g_size;       // level k's size
 ivec2 g_a;          // the reference point A in level k
 float g_depth[25];  // level k's depths at A + (-2..2, -2..2), row-major; u_empty outside
+float g_far[25];    // and their farthest caster texels (0: none)
 #if OWN_IDS
 int g_id[25];       // and their object ids (-1 outside)
 float g_other[25];  // and their other objects' nearest distances
@@ -50,11 +56,12 @@ bool inside(ivec2 o) {
 }
 void load(ivec2 o) {
     ivec2 q = g_a + o;
-    float z = u_empty;
-    if (inside(o)) z = u_from_hsm == 1 ? imageLoad(u_hsm0, q).r : imageLoad(u_depth_in, q).r;
-    g_depth[slot(o)] = z;
+    vec2 z = vec2(u_empty, 0.0);
+    if (inside(o)) z = u_from_hsm == 1 ? imageLoad(u_hsm0, q).rr : imageLoad(u_depth_in, q).rg;
+    g_depth[slot(o)] = z.x;
+    g_far[slot(o)] = z.x < u_empty ? z.y : 0.0;
 #if OWN_IDS
-    vec2 owner = z < u_empty ? imageLoad(u_owners_in, q).rg : vec2(-1.0, u_empty);
+    vec2 owner = z.x < u_empty ? imageLoad(u_owners_in, q).rg : vec2(-1.0, u_empty);
     g_id[slot(o)] = int(owner.x);
     g_other[slot(o)] = owner.y;
 #endif
@@ -103,12 +110,14 @@ float otherAt(ivec2 o) {
 struct Merged {
     vec4 extent;
     float depth;
+    float far;    // the farthest caster texel's depth (0: none)
     int id;       // the nearest texel's object
     float other;  // the nearest distance of the texels of other objects
 };
 void take(inout Merged m, ivec2 q) {
     if (!inside(q)) return;
     m.extent = unite(m.extent, extentAt(q));
+    m.far = max(m.far, g_far[slot(q)]);
     // The nearer of the two gives the id; the farther adds its texels of other objects: all of
     // them where its own id differs (its nearest among them), else those of its own others.
     float zq = depthAt(q), oq = otherAt(q);
@@ -126,7 +135,7 @@ void take(inout Merged m, ivec2 q) {
 // level's last row or column): left there, a caster on the map's top or right edge, where the
 // light's window puts the casters' bounds, lost texels at every coarser level.
 Merged firstPass(ivec2 o) {
-    Merged m = Merged(extentAt(o), depthAt(o), idAt(o), otherAt(o));
+    Merged m = Merged(extentAt(o), depthAt(o), g_far[slot(o)], idAt(o), otherAt(o));
     if (mergesDown(o + ivec2(1, 0), o, o + ivec2(2, 0))) take(m, o + ivec2(1, 0));
     if (mergesDown(o + ivec2(0, 1), o, o + ivec2(0, 2))) take(m, o + ivec2(0, 1));
     if (inside(o + 1) && (contains(m.extent, extentAt(o + 1)) || !inside(o + 2)))
@@ -156,7 +165,7 @@ void main() {
     g_a = 2 * p;
     if (!loadDepths()) {
         imageStore(u_extent_out, p, kNone);
-        imageStore(u_depth_out, p, vec4(u_empty));
+        imageStore(u_depth_out, p, vec4(u_empty, 0.0, 0.0, 0.0));
 #if OWN_IDS
         imageStore(u_owners_out, p, vec4(-1.0, u_empty, 0.0, 0.0));
 #endif
@@ -171,7 +180,7 @@ void main() {
         if (!contains(firstPass(ivec2(-2)).extent, extentAt(diagonal))) take(m, diagonal);
     }
     imageStore(u_extent_out, p, m.extent);
-    imageStore(u_depth_out, p, vec4(m.depth));
+    imageStore(u_depth_out, p, vec4(markSplit(m.depth, m.far), m.far, 0.0, 0.0));
 #if OWN_IDS
     imageStore(u_owners_out, p, vec4(float(m.id), m.other, 0.0, 0.0));
 #endif

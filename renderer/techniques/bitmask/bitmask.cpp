@@ -89,7 +89,8 @@ void Bitmask::prepare(const gl::ContextInfo&, const passes::GpuScene& scene) {
     const int ids = static_cast<int>(roles.size() / 4);
     receives_ = gl::createTexture2D(GL_RGBA8, ids, 1, "bitmask object roles");
     glTextureSubImage2D(receives_.id(), 0, 0, 0, ids, 1, GL_RGBA, GL_UNSIGNED_BYTE, roles.data());
-    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_, far_layer_, own_ids_);
+    ranges_ = std::make_unique<DepthRanges>(map_size_, accel_, ysm_size_, far_layer_, own_ids_,
+                                            params_.getEnum(kPeel) == Peel::OthersFirst);
     if (use_bitmask_) {
         const auto points = bitmask::samplePoints(bits_, pattern_, seed_);
         masks_ = bitmask::halfPlaneBuffer(points);
@@ -191,11 +192,11 @@ const TechniqueInfo kBitmaskTechnique = {
         MemoryTerms terms{{"technique.map_size", "the light depth map and its depth ranges",
                            saturatingProduct({m, m, 4 + 11 + 11})},
                           {"technique.ysm_size", "the YSM", saturatingProduct({ysm, ysm, 11})}};
-        // Its pyramid (RG32F mips) and, with microrects, theirs (RGBA32F and R32F, levels 1..).
+        // Its pyramid (RG32F mips) and, with microrects, theirs (RGBA32F and RG32F, levels 1..).
         const bool far = p.get(bitmask::kLayers) == 2;
         if (far)
             terms.push_back({"technique.layers", "the far layer's depth ranges and microrects",
-                             saturatingProduct({m, m, 11 + 7})});
+                             saturatingProduct({m, m, 11 + 8})});
         // Each layer's owners (RG32F mips), where a convex object casts and receives: counted
         // always, as the scene is not known here.
         terms.push_back({"technique.map_size", "the light maps' object ids",

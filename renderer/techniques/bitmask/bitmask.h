@@ -29,6 +29,7 @@ namespace penumbra::techniques::bitmask {
 enum class Occluders { Micropatch, Microquad, Microrect };
 enum class Visibility { Bitmask, Area };
 enum class RectFit { Bounds, Coverage };
+enum class Peel { Nearest, OthersFirst };
 
 // ACCEL in the shaders is the enum's index: 0 hsm, 1 mssm, 2 ysm (bitmask/search.glsl).
 inline constexpr EnumKey<Accel, 3> kAccel{"accel", {"hsm", "mssm", "ysm"}};
@@ -37,11 +38,13 @@ inline constexpr EnumKey<Occluders, 3> kOccluders{"occluders",
 inline constexpr EnumKey<Visibility, 2> kVisibility{"visibility", {"bitmask", "area"}};
 inline constexpr EnumKey<RectFit, 2> kRectFit{"rect_fit", {"bounds", "coverage"}};
 
+inline constexpr FloatKey kSplit{"split"};
 inline constexpr IntKey kYsmSize{"ysm_size"};
 inline constexpr IntKey kBits{"bits"};
 inline constexpr BoolKey kGapFill{"gap_fill"};
 inline constexpr FloatKey kGapRatio{"gap_ratio"};
 inline constexpr IntKey kLayers{"layers"};
+inline constexpr EnumKey<Peel, 2> kPeel{"peel", {"nearest", "others_first"}};
 inline constexpr IntKey kBudget{"budget"};
 inline constexpr BoolKey kBudgetFalloff{"budget_falloff"};
 inline constexpr IntKey kBudgetEdge{"budget_edge"};
@@ -68,6 +71,11 @@ inline constexpr std::array kBitmaskParams = {
               "microrects' extent: the bounding rectangle of what they merged (the paper), or "
               "that rectangle shrunk to the area of the caster texels inside it, about their "
               "mean (coarse levels overestimate less)"),
+    floatParam(kSplit, 0.0625, 0.0, 1.0,
+               "a microrect whose farthest caster texel would shadow more than this fraction of "
+               "the light's side away from where its nearest depth puts it is replaced by the "
+               "finer level's microrects under it (0: never, the paper)")
+        .uniform(),
     enumParam(kVisibility, Visibility::Bitmask,
               "occlusion bitmask of light samples, or summed back-projected area"),
     intParam(kBits, 256, 64, 256, "light samples in the bitmask: 64 (8x8), 128 or 256 (16x16)"),
@@ -84,6 +92,9 @@ inline constexpr std::array kBitmaskParams = {
              "paper); 2, also the nearest surface behind it (depth peeling), which the light's "
              "edges see under a caster's silhouette (bitmask only)")
         .define(),
+    enumParam(kPeel, Peel::OthersFirst,
+              "layers 2: the far layer holds the nearest caster surface behind the map's, or "
+              "another object's where there is one before the map object's own far side"),
     intParam(
         kBudget, 12, 0, 64,
         "b_mo: at most b_mo x b_mo micro-occluders per pixel and layer at the chosen level (0 = "

@@ -19,16 +19,19 @@ GLuint groupsFor(int size) {
 }
 }  // namespace
 
-DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer, bool own_ids)
+DepthRanges::DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer, bool own_ids,
+                         bool others_first)
     : map_size_(map_size),
-      hsm_(map_size, "bitmask hsm", nullptr, own_ids),
-      depth_pass_("bitmask light depth", own_ids ? passes::LightDepthPass::Output::DistanceAndIds
-                                                 : passes::LightDepthPass::Output::Distance) {
+      others_first_(far_layer && others_first),
+      hsm_(map_size, "bitmask hsm", nullptr, own_ids || others_first_),
+      depth_pass_("bitmask light depth", own_ids || others_first_
+                                             ? passes::LightDepthPass::Output::DistanceAndIds
+                                             : passes::LightDepthPass::Output::Distance) {
     if (far_layer) {
         far_ = std::make_unique<passes::DistancePyramid>(map_size_, "bitmask far layer",
                                                          &hsm_.depth(), own_ids);
         peel_pass_ = std::make_unique<passes::LightDepthPass>(
-            "bitmask far layer peel", "techniques/bitmask/peel.frag", own_ids);
+            "bitmask far layer peel", "techniques/bitmask/peel.frag", own_ids || others_first_);
     }
     if (accel == Accel::Hsm) return;
     ysm_ = accel == Accel::Ysm;
@@ -54,6 +57,8 @@ void DepthRanges::renderFarLayer(const passes::GpuScene& scene, const scene::Rec
     glUseProgram(peel_pass_->program().id());
     gl::setUniform(peel_pass_->program(), "u_peel_gap", kPeelGap);
     glBindTextureUnit(BITMASK_UNIT_PEEL_FRONT, hsm_.texture().id());
+    gl::setUniform(peel_pass_->program(), "u_others_first", others_first_ ? 1 : 0);
+    if (others_first_) glBindTextureUnit(BITMASK_UNIT_PEEL_FRONT_OWNERS, hsm_.owners().id());
     // Near 0 and range 1: the pass's depth is the distance itself, as peel.frag compares it.
     peel_pass_->draw(scene, passes::GpuScene::Filter::Casters, light, {view_proj, 0.0f, 1.0f});
     passes::DistancePyramid::endDraw();

@@ -24,16 +24,19 @@ class DepthRanges {
 public:
     // MAP_SIZE (a power of two) texels per side; for the YSM, the MSSM part has YSM_SIZE;
     // FAR_LAYER: also the far layer (renderFarLayer()); OWN_IDS: each level 0 texel's object id
-    // as well (hsmOwners(), farOwners()).
+    // as well (hsmOwners(), farOwners()); OTHERS_FIRST: the far layer takes another object's
+    // surface before the far side of the front texel's own (the map's ids, hsmOwners(), then
+    // are kept whatever OWN_IDS).
     DepthRanges(int map_size, Accel accel, int ysm_size, bool far_layer = false,
-                bool own_ids = false);
+                bool own_ids = false, bool others_first = false);
 
     // Renders the casters' distance along the light's forward axis (empty texels: kEmpty)
     // into HSM level 0, through VIEW_PROJ from the light's centre.
     void renderMap(const passes::GpuScene& scene, const scene::RectLight& light,
                    const glm::mat4& view_proj);
     // Renders the far layer's level 0 after renderMap(): per texel the distance of the nearest
-    // caster surface more than kPeelGap (relative) beyond the map's, kEmpty where none.
+    // caster surface more than kPeelGap (relative) beyond the map's, kEmpty where none; with
+    // OTHERS_FIRST the nearest of another object than the map's there, where one is.
     void renderFarLayer(const passes::GpuScene& scene, const scene::RectLight& light,
                         const glm::mat4& view_proj);
     // Builds HSM levels 1.. from level 0 (and the far layer's, with one).
@@ -62,7 +65,7 @@ public:
 
 private:
     int map_size_, mssm_base_ = 0, mssm_layers_ = 0;
-    bool ysm_ = false;
+    bool ysm_ = false, others_first_ = false;
     passes::DistancePyramid hsm_;
     gl::Texture mssm_, no_far_;
     passes::LightDepthPass depth_pass_;                  // distances into HSM level 0

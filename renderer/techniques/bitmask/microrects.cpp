@@ -18,7 +18,7 @@ MicroRects::MicroRects(int map_size, bool own_ids, bool fit)
     extent_ =
         gl::createTexture2D(GL_RGBA32F, map_size_, map_size_, "bitmask microrect extents", levels_);
     depth_ =
-        gl::createTexture2D(GL_R32F, map_size_, map_size_, "bitmask microrect depths", levels_);
+        gl::createTexture2D(GL_RG32F, map_size_, map_size_, "bitmask microrect depths", levels_);
     program_ = gl::buildProgram("bitmask microrects", {"techniques/bitmask/microrects.comp"},
                                 {{"OWN_IDS", own_ids ? "1" : "0"}});
     if (fit_) {
@@ -71,11 +71,11 @@ void MicroRects::build(const gl::Texture& hsm, const gl::Texture* owners) {
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_IN, extent_.id(), level - 1, GL_FALSE, 0,
                            GL_READ_ONLY, GL_RGBA32F);
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_IN, depth_.id(), level - 1, GL_FALSE, 0,
-                           GL_READ_ONLY, GL_R32F);
+                           GL_READ_ONLY, GL_RG32F);
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_EXTENT_OUT, extent_.id(), level, GL_FALSE, 0,
                            GL_WRITE_ONLY, GL_RGBA32F);
         glBindImageTexture(BITMASK_IMAGE_MICRORECTS_DEPTH_OUT, depth_.id(), level, GL_FALSE, 0,
-                           GL_WRITE_ONLY, GL_R32F);
+                           GL_WRITE_ONLY, GL_RG32F);
         if (own_ids_) {
             glBindImageTexture(BITMASK_IMAGE_MICRORECTS_OWNERS_IN, owners->id(), level - 1,
                                GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);

@@ -25,7 +25,8 @@ public:
 
     // RGBA32F: x0, y0, x1, y1 (level-0 texels); levels 1 and up
     const gl::Texture& extent() const { return extent_; }
-    const gl::Texture& depth() const { return depth_; }  // R32F: nearest merged distance
+    // RG32F: the nearest and the farthest caster texel merged
+    const gl::Texture& depth() const { return depth_; }
 
 private:
     int map_size_, levels_;
