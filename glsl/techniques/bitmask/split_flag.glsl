@@ -6,8 +6,8 @@
 #define BITMASK_SPLIT_FLAG_GLSL
 
 // A far caster merged with a near one, not the curvature of one caster's surface, which the
-// coarse levels approximate at their nearest depth everywhere (a sphere 5 radii from the light
-// spans at most 1.25 between its silhouette and its nearest point).
+// coarse levels approximate at their nearest depth everywhere (a sphere whose centre lies 5
+// radii from the light spans 1.2 from its nearest point to its silhouette).
 const float kSplitRatio = 1.25;
 
 // NEAR with the mark set where FAR lies kSplitRatio times as far or more, cleared elsewhere.
