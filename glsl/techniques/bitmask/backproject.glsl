@@ -144,13 +144,13 @@ float occluderDepth(int layer, ivec2 xy, int level) {
 }
 
 #if MICRORECTS
-// The distance of the farthest caster texel that microrect (X, Y) of LEVEL (> 0) of LAYER
-// merged (microrects.comp).
-float occluderFar(int layer, ivec2 xy, int level) {
+// The distances of the nearest and the farthest caster texel that microrect (X, Y) of LEVEL
+// (> 0) of LAYER merged (microrects.comp), in one fetch.
+vec2 occluderDepths(int layer, ivec2 xy, int level) {
 #if LAYERS == 2
-    if (layer == 1) return texelFetch(u_far_rect_depth, xy, level).g;
+    if (layer == 1) return texelFetch(u_far_rect_depth, xy, level).rg;
 #endif
-    return texelFetch(u_rect_depth, xy, level).g;
+    return texelFetch(u_rect_depth, xy, level).rg;
 }
 #endif
 
@@ -328,11 +328,11 @@ void backprojectOne(int layer, vec3 p, float pz, ivec2 q, int level, vec4 w, flo
 void backprojectMarked(int layer, vec3 p, vec4 plane, int own, float pz, ivec2 xy, int level,
                        inout Coverage c, inout int count) {
     vec2 t = u_texel * float(1 << level);
-    float z = occluderDepth(layer, xy, level);
+    vec2 z = occluderDepths(layer, xy, level);
     vec4 w = occluderWindow(layer, xy.x, xy.y, level, t);
-    vec4 l = lightRect(p, w, z);
-    if (!splits(p, w, l, occluderFar(layer, xy, level), pz)) {
-        backprojectOne(layer, p, pz, xy, level, w, z, l, c, count);
+    vec4 l = lightRect(p, w, z.x);
+    if (!splits(p, w, l, z.y, pz)) {
+        backprojectOne(layer, p, pz, xy, level, w, z.x, l, c, count);
         return;
     }
     int k1 = level - 1;
