@@ -31,6 +31,13 @@ out=$("${ab[@]}" --baseline "$PENUMBRA" --glsl variant -t hard --size 32x24 --ro
 [ "$rc" -eq 1 ] || fail "--glsl's variant must render another image, got $rc: $out"
 out=$("${ab[@]}" --baseline "$PENUMBRA" --glsl "$PENUMBRA_SOURCE_DIR/glsl" -t hard --size 32x24 \
     --rounds 1 --same "$scene") || fail "--glsl with the same shaders: $out"
+# --baseline-define: the same build with another setting as the baseline.
+rc=0
+out=$("${ab[@]}" --baseline "$PENUMBRA" --baseline-define technique.samples=3 -t reference \
+    --size 32x24 --rounds 1 --same -D technique.samples=2 "$scene") || rc=$?
+[ "$rc" -eq 1 ] || fail "--baseline-define's other samples must render another image: $rc $out"
+expect_exit 2 "^ab-passes: --baseline-define samples: expected KEY=VALUE$" -- \
+    "${ab[@]}" --baseline "$PENUMBRA" --baseline-define samples -t hard --size 32x24 "$scene"
 expect_exit 2 "^ab-passes: --glsl nowhere: not a folder$" -- \
     "${ab[@]}" --baseline "$PENUMBRA" --glsl nowhere -t hard --size 32x24 "$scene"
 expect_exit 2 "^ab-passes: --size 32by24: expected WxH$" -- \
